@@ -1,0 +1,37 @@
+// A particle: shape, material, state and bound, plus id and collision mask (1.2.1).
+#pragma once
+#include <core/Bound.hpp>
+#include <core/Material.hpp>
+#include <core/Shape.hpp>
+#include <core/State.hpp>
+
+namespace yade {
+
+class Body : public Serializable {
+public:
+    using id_t = int;
+    id_t id = -1;
+    int mask = 1; // bodies collide only when (mask1 & mask2) != 0
+    bool dynamic = true;
+    int clumpId = -1;
+    std::shared_ptr<Shape> shape;
+    std::shared_ptr<Material> material;
+    std::shared_ptr<State> state = std::make_shared<State>();
+    std::shared_ptr<Bound> bound;
+    template <class V> void visit(V& v) {
+        Serializable::visit(v);
+        v.attr("id", id, "Index in O.bodies (-1 while not appended)", Attr::readonly);
+        v.attr("mask", mask, "Collision mask: two bodies may interact only if (mask1 & mask2) != 0");
+        v.attr("dynamic", dynamic, "Whether forces move this body (a non-dynamic body keeps its prescribed velocity)");
+        v.attr("clumpId", clumpId, "Id of the clump this body belongs to (-1: none)", Attr::readonly);
+        v.attr("shape", shape, "Geometry of the particle");
+        v.attr("material", material, "Material (may be shared with other bodies)");
+        v.attr("state", state, "Physical state (position, velocity...)");
+        v.attr("bound", bound, "Bounding volume for collision detection (None: no collisions)");
+    }
+    bool isDynamic() const { return dynamic; }
+    // Two bodies may collide when their masks share a bit and at least one of them moves.
+    static bool mayCollide(const Body& a, const Body& b) { return (a.mask & b.mask) != 0 && a.id != b.id && (a.dynamic || b.dynamic); }
+};
+
+} // namespace yade

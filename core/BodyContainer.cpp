@@ -1,0 +1,21 @@
+#include <core/BodyContainer.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
+    if (!b) throw std::invalid_argument("cannot append None to O.bodies");
+    if (b->id >= 0)
+        throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
+    b->id = static_cast<id_t>(bodies.size());
+    bodies.push_back(b);
+    return b->id;
+}
+
+void BodyContainer::erase(id_t id) {
+    if (!exists(id)) throw std::out_of_range("Body #" + std::to_string(id) + " does not exist.");
+    bodies[id]->id = -1;
+    bodies[id].reset();
+}
+
+} // namespace yade

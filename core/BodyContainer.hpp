@@ -1,0 +1,25 @@
+// O.bodies: bodies indexed by id; an erased body leaves a hole (ids are never reused).
+#pragma once
+#include <core/Body.hpp>
+#include <vector>
+
+namespace yade {
+
+class BodyContainer {
+public:
+    using id_t = Body::id_t;
+    // Appends a body that is not yet in a scene; returns its new id.
+    id_t insert(const std::shared_ptr<Body>& b);
+    bool exists(id_t id) const { return id >= 0 && (size_t)id < bodies.size() && bodies[id]; }
+    const std::shared_ptr<Body>& operator[](id_t id) const { return bodies[id]; }
+    size_t size() const { return bodies.size(); } // including holes left by erase
+    void erase(id_t id);                          // the scene removes the body's interactions first
+    void clear() { bodies.clear(); }
+    auto begin() const { return bodies.begin(); }
+    auto end() const { return bodies.end(); }
+
+private:
+    std::vector<std::shared_ptr<Body>> bodies;
+};
+
+} // namespace yade

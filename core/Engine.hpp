@@ -1,0 +1,42 @@
+// A step of the simulation loop; O.engines runs them in order every iteration (1.2.1).
+#pragma once
+#include <lib/factory/ClassRegistry.hpp>
+
+namespace yade {
+
+class Scene;
+
+class Engine : public Serializable {
+public:
+    bool dead = false;
+    int ompThreads = -1;
+    std::string label;
+    Scene* scene = nullptr; // set by the scene before each call
+    template <class V> void visit(V& v) {
+        Serializable::visit(v);
+        v.attr("dead", dead, "If true, this engine is skipped");
+        v.attr("ompThreads", ompThreads, "Threads this engine may use (-1: all available)");
+        v.attr("label", label, "Name under which the engine is reachable from Python scripts");
+    }
+    virtual bool isActivated() { return true; }
+    virtual void action() {}
+    // Called once by the loop before the engine first runs after a change of O.engines.
+    virtual void prepare() {}
+};
+
+class GlobalEngine : public Engine {
+public:
+    template <class V> void visit(V& v) { Engine::visit(v); }
+};
+
+// Acts on selected bodies only.
+class PartialEngine : public Engine {
+public:
+    std::vector<int> ids;
+    template <class V> void visit(V& v) {
+        Engine::visit(v);
+        v.attr("ids", ids, "Ids of the bodies this engine acts on");
+    }
+};
+
+} // namespace yade

@@ -1,0 +1,59 @@
+#include <core/ForceContainer.hpp>
+
+namespace yade {
+
+void ForceContainer::setThreads(int n) {
+    force.resize(n > 0 ? n : 1);
+    torque.resize(force.size());
+    resize(summedForce.size());
+}
+
+void ForceContainer::resize(size_t n) {
+    for (auto* v : {&summedForce, &summedTorque, &permForce, &permTorque}) v->resize(n, Vector3r::Zero());
+    for (size_t t = 0; t < force.size(); ++t) {
+        force[t].resize(n, Vector3r::Zero());
+        torque[t].resize(n, Vector3r::Zero());
+    }
+    synced = false;
+}
+
+void ForceContainer::addPermForce(int id, const Vector3r& f) {
+    permForce[id] += f;
+    anyPermanent = true;
+    synced = false;
+}
+
+void ForceContainer::addPermTorque(int id, const Vector3r& t) {
+    permTorque[id] += t;
+    anyPermanent = true;
+    synced = false;
+}
+
+void ForceContainer::sync() {
+    if (synced) return;
+    const size_t n = summedForce.size();
+    for (size_t i = 0; i < n; ++i) {
+        Vector3r f = force[0][i], t = torque[0][i];
+        for (size_t th = 1; th < force.size(); ++th) {
+            f += force[th][i];
+            t += torque[th][i];
+        }
+        if (anyPermanent) {
+            f += permForce[i];
+            t += permTorque[i];
+        }
+        summedForce[i] = f;
+        summedTorque[i] = t;
+    }
+    synced = true;
+}
+
+void ForceContainer::reset() {
+    for (size_t th = 0; th < force.size(); ++th) {
+        std::fill(force[th].begin(), force[th].end(), Vector3r::Zero());
+        std::fill(torque[th].begin(), torque[th].end(), Vector3r::Zero());
+    }
+    synced = false;
+}
+
+} // namespace yade

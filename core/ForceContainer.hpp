@@ -1,0 +1,45 @@
+// O.forces: generalized forces accumulated during one step (1.2.1). Each OpenMP thread adds
+// into its own buffer; sync() sums the buffers in thread order, so a run is reproducible.
+#pragma once
+#include <lib/base/Math.hpp>
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace yade {
+
+class ForceContainer {
+public:
+    ForceContainer() { setThreads(1); }
+    void setThreads(int n);
+    int threads() const { return (int)force.size(); }
+    void resize(size_t nBodies);
+    size_t size() const { return summedForce.size(); }
+    void addForce(int id, const Vector3r& f) { force[thread()][id] += f; synced = false; }
+    void addTorque(int id, const Vector3r& t) { torque[thread()][id] += t; synced = false; }
+    // Forces that stay from step to step (set from Python with permanent=True).
+    void addPermForce(int id, const Vector3r& f);
+    void addPermTorque(int id, const Vector3r& t);
+    const Vector3r& getForce(int id) { sync(); return summedForce[id]; }
+    const Vector3r& getTorque(int id) { sync(); return summedTorque[id]; }
+    const Vector3r& getPermForce(int id) const { return permForce[id]; }
+    const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
+    void sync();
+    void reset(); // zero the per-step forces; permanent ones are kept
+    bool hasPermanent() const { return anyPermanent; }
+
+private:
+    static int thread() {
+#ifdef _OPENMP
+        return omp_get_thread_num();
+#else
+        return 0;
+#endif
+    }
+    std::vector<std::vector<Vector3r>> force, torque; // [thread][body]
+    std::vector<Vector3r> summedForce, summedTorque, permForce, permTorque;
+    bool synced = true, anyPermanent = false;
+};
+
+} // namespace yade

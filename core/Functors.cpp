@@ -1,0 +1,33 @@
+// Default bodies of the functor entry points: reached only when a base functor is called.
+#include <core/BoundDispatcher.hpp>
+#include <core/IGeomDispatcher.hpp>
+#include <core/IPhysDispatcher.hpp>
+#include <core/LawDispatcher.hpp>
+#include <core/Scene.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+static std::runtime_error notImplemented(const Functor& f) {
+    return std::runtime_error(f.getClassName() + ".go is not implemented (use a concrete functor)");
+}
+void BoundFunctor::go(const Shape&, std::shared_ptr<Bound>&, const State&, const Body&) { throw notImplemented(*this); }
+bool IGeomFunctor::go(const Shape&, const Shape&, const State&, const State&, const Vector3r&, bool, Interaction&) {
+    throw notImplemented(*this);
+}
+void IPhysFunctor::go(const std::shared_ptr<Material>&, const std::shared_ptr<Material>&, Interaction&) {
+    throw notImplemented(*this);
+}
+bool LawFunctor::go(IGeom&, IPhys&, Interaction&) { throw notImplemented(*this); }
+
+void BoundDispatcher::action() {
+    for (const auto& b : scene->bodies) {
+        if (!b || !b->shape) continue;
+        if (BoundFunctor* f = getFunctor(*b->shape)) {
+            f->scene = scene;
+            f->go(*b->shape, b->bound, *b->state, *b);
+        }
+    }
+}
+
+} // namespace yade

@@ -1,0 +1,51 @@
+// A pair of bodies: created by the collider (potential), real once geom and phys exist (1.2.1).
+#pragma once
+#include <core/Body.hpp>
+#include <core/IGeom.hpp>
+#include <core/IPhys.hpp>
+
+namespace yade {
+
+class IGeomFunctor;
+class IPhysFunctor;
+class LawFunctor;
+
+class Interaction : public Serializable {
+public:
+    Body::id_t id1 = -1, id2 = -1;
+    long long iterMadeReal = -1;
+    long long iterLastSeen = -1; // last iteration the collider saw the bounds overlap
+    Vector3i cellDist = Vector3i::Zero();
+    std::shared_ptr<IGeom> geom;
+    std::shared_ptr<IPhys> phys;
+    // Functors chosen for this pair, cached by the dispatchers; reset when a body changes type.
+    IGeomFunctor* geomFunctor = nullptr;
+    IPhysFunctor* physFunctor = nullptr;
+    LawFunctor* lawFunctor = nullptr;
+    bool geomSwapped = false; // the Ig2 functor handles (shape2, shape1): ids were swapped
+    size_t linIndex = 0;      // position in InteractionContainer
+    template <class V> void visit(V& v) {
+        Serializable::visit(v);
+        v.attr("id1", id1, "Id of the first body", Attr::readonly);
+        v.attr("id2", id2, "Id of the second body", Attr::readonly);
+        v.attr("iterMadeReal", iterMadeReal, "Iteration when the interaction became real (-1: not real)", Attr::readonly);
+        v.attr("iterLastSeen", iterLastSeen, "Iteration when the collider last saw the bounds overlap", Attr::hidden);
+        v.attr("cellDist", cellDist, "Periodic cell shift of body 2 relative to body 1", Attr::readonly);
+        v.attr("geom", geom, "Geometry of the contact (IGeom)");
+        v.attr("phys", phys, "Physics of the contact (IPhys)");
+    }
+    Interaction() = default;
+    Interaction(Body::id_t a, Body::id_t b) : id1(a), id2(b) {}
+    bool isReal() const { return geom && phys; }
+    void reset() { // back to a potential interaction
+        geom.reset();
+        phys.reset();
+        iterMadeReal = -1;
+        geomFunctor = nullptr;
+        physFunctor = nullptr;
+        lawFunctor = nullptr;
+    }
+    void swapOrder() { std::swap(id1, id2); cellDist = -cellDist; }
+};
+
+} // namespace yade

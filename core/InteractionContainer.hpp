@@ -1,0 +1,37 @@
+// O.interactions: a flat array of interactions plus, per body, the list of its partners.
+#pragma once
+#include <core/Interaction.hpp>
+#include <vector>
+
+namespace yade {
+
+class InteractionContainer {
+public:
+    using id_t = Body::id_t;
+    using Ptr = std::shared_ptr<Interaction>;
+    // Finds the interaction between a and b in either order; nullptr if none.
+    const Ptr& find(id_t a, id_t b) const;
+    bool insert(const Ptr& I); // false if the pair already exists
+    bool erase(id_t a, id_t b);
+    void clear();
+    size_t size() const { return linIntrs.size(); }
+    size_t countReal() const;
+    const Ptr& operator[](size_t i) const { return linIntrs[i]; }
+    auto begin() const { return linIntrs.begin(); }
+    auto end() const { return linIntrs.end(); }
+    // Interactions of one body (potential and real).
+    std::vector<Ptr> withBody(id_t id) const;
+    // Keeps the per-body lists as long as the body container.
+    void resizeBodies(size_t n) {
+        if (n > partners.size()) partners.resize(n);
+    }
+    void eraseBody(id_t id); // every interaction of this body
+
+private:
+    std::vector<Ptr> linIntrs;
+    std::vector<std::vector<std::pair<id_t, Interaction*>>> partners; // per body: (other id, interaction)
+    static const Ptr none;
+    void unlinkPartner(id_t from, id_t other);
+};
+
+} // namespace yade

@@ -1,0 +1,40 @@
+// Law2 functors (constitutive laws) turn IGeom + IPhys into forces; LawDispatcher picks one
+// per (IGeom type, IPhys type).
+#pragma once
+#include <core/Dispatcher.hpp>
+#include <core/Interaction.hpp>
+
+namespace yade {
+
+class LawFunctor : public Functor {
+public:
+    template <class V> void visit(V& v) { Functor::visit(v); }
+    // Applies forces on both bodies; returns false when the interaction must be removed.
+    virtual bool go(IGeom& geom, IPhys& phys, Interaction& I);
+};
+
+template <class G, class P> class LawFunctorOf : public LawFunctor {
+public:
+    std::vector<std::string> argTypes() const override { return {registeredName<G>(), registeredName<P>()}; }
+    bool go(IGeom& geom, IPhys& phys, Interaction& I) final { return go(static_cast<G&>(geom), static_cast<P&>(phys), I); }
+    virtual bool go(G& geom, P& phys, Interaction& I) = 0;
+};
+
+class LawDispatcher : public Dispatcher {
+public:
+    std::vector<std::shared_ptr<LawFunctor>> functors;
+    template <class V> void visit(V& v) {
+        Dispatcher::visit(v);
+        v.attr("functors", functors, "Law2 functors, one per (IGeom, IPhys) pair");
+    }
+    std::vector<std::shared_ptr<Functor>> functorsBase() const override { return {functors.begin(), functors.end()}; }
+    void postLoad() override { table.invalidate(); }
+    const DispatchTable2D<LawFunctor>::Entry& getFunctor(const IGeom& g, const IPhys& p) {
+        return table.get(g.getClassIndex(), p.getClassIndex(), functors, "IGeom", "IPhys", false);
+    }
+
+private:
+    DispatchTable2D<LawFunctor> table;
+};
+
+} // namespace yade

@@ -1,0 +1,21 @@
+// Mechanical properties shared by bodies (1.2.1); held in O.materials.
+#pragma once
+#include <lib/factory/ClassRegistry.hpp>
+
+namespace yade {
+
+class Material : public Serializable {
+public:
+    int id = -1; // index in O.materials, -1 while not appended
+    std::string label;
+    Real density = 1000;
+    template <class V> void visit(V& v) {
+        Serializable::visit(v);
+        v.attr("id", id, "Index in O.materials (-1 if not there); set by O.materials.append", Attr::readonly);
+        v.attr("label", label, "Textual name; O.materials['label'] finds it");
+        v.attr("density", density, "Density [kg/m³]", Attr::positive);
+    }
+    YADE_INDEXABLE_ROOT(Material)
+};
+
+} // namespace yade

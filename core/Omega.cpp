@@ -1,0 +1,83 @@
+#include <core/Omega.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+Omega::Omega() {
+    scenes[0] = std::make_shared<Scene>();
+    scenes[1] = std::make_shared<Scene>();
+}
+
+Omega::~Omega() {
+    stopRequested = true;
+    if (loopThread.joinable()) loopThread.join();
+}
+
+void Omega::requireStopped(const char* what) const {
+    if (running) throw std::runtime_error(std::string(what) + " is not possible while the simulation is running (call O.pause() first)");
+}
+
+void Omega::loop() {
+    Scene& s = scene();
+    try {
+        while (!stopRequested) {
+            s.moveToNextTimeStep();
+            if (s.iter == s.stopAtIter) break;
+        }
+    } catch (...) {
+        error = std::current_exception();
+    }
+    running = false;
+}
+
+void Omega::run(long long nSteps) {
+    if (running) return;
+    joinLoop();
+    Scene& s = scene();
+    if (nSteps > 0) s.stopAtIter = s.iter + nSteps;
+    error = nullptr;
+    stopRequested = false;
+    running = true;
+    loopThread = std::thread([this] { loop(); });
+    loopThreadId = loopThread.get_id();
+}
+
+void Omega::joinLoop() {
+    if (loopThread.joinable() && !inLoopThread()) loopThread.join();
+}
+
+void Omega::pause() {
+    stopRequested = true;
+    if (!inLoopThread()) joinLoop();
+}
+
+void Omega::wait() {
+    if (inLoopThread()) throw std::runtime_error("O.wait() cannot be called from inside the simulation loop");
+    joinLoop();
+    if (error) {
+        std::exception_ptr e = error;
+        error = nullptr;
+        std::rethrow_exception(e);
+    }
+}
+
+void Omega::step() {
+    if (inLoopThread()) throw std::runtime_error("O.step() cannot be called from inside the simulation loop");
+    requireStopped("O.step()");
+    joinLoop();
+    scene().moveToNextTimeStep();
+}
+
+void Omega::reset() {
+    requireStopped("O.reset()");
+    joinLoop();
+    scenes[current] = std::make_shared<Scene>();
+}
+
+void Omega::switchWorld() {
+    requireStopped("O.switchWorld()");
+    joinLoop();
+    current = 1 - current;
+}
+
+} // namespace yade

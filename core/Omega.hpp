@@ -1,0 +1,43 @@
+// The simulation controller behind Python's O: owns the scenes and the background loop thread.
+#pragma once
+#include <core/Scene.hpp>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <thread>
+
+namespace yade {
+
+class Omega {
+public:
+    Omega();
+    ~Omega();
+    Scene& scene() { return *scenes[current]; }
+    std::shared_ptr<Scene> scenePtr() { return scenes[current]; }
+
+    // Starts the loop in a background thread; nSteps > 0 stops after that many steps,
+    // otherwise it runs until pause() or until iter reaches stopAtIter.
+    void run(long long nSteps = -1);
+    void pause(); // stops after the current step; from the loop thread it only requests the stop
+    void wait();  // blocks until the loop stops; rethrows what stopped it
+    void step();  // one step in the calling thread
+    bool isRunning() const { return running; }
+    bool inLoopThread() const { return std::this_thread::get_id() == loopThreadId; }
+    void reset();       // a new empty scene
+    void switchWorld(); // toggle between the primary and the secondary scene
+    // Error that stopped the last background run and has not been rethrown by wait() yet.
+    std::exception_ptr pendingError() const { return error; }
+
+private:
+    std::shared_ptr<Scene> scenes[2];
+    int current = 0;
+    std::thread loopThread;
+    std::thread::id loopThreadId;
+    std::atomic<bool> running{false}, stopRequested{false};
+    std::exception_ptr error;
+    void loop();
+    void joinLoop();
+    void requireStopped(const char* what) const;
+};
+
+} // namespace yade

@@ -1,0 +1,105 @@
+#include <core/Scene.hpp>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <random>
+#include <stdexcept>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace yade {
+
+static std::string nowString(const char* fmt) {
+    std::time_t t = std::time(nullptr);
+    char buf[64];
+    std::strftime(buf, sizeof buf, fmt, std::localtime(&t));
+    return buf;
+}
+
+Scene::Scene() {
+    // id: unique per run (time, pid-like random suffix); d.id adds a description later.
+    std::random_device rd;
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "p%05u", rd() % 100000);
+    tags["id"] = nowString("%Y%m%dT%H%M%S") + suffix;
+    tags["d.id"] = tags["id"];
+    tags["id.d"] = tags["id"];
+    tags["description"] = "";
+    tags["isoTime"] = nowString("%Y%m%dT%H%M%S");
+#ifdef _OPENMP
+    setThreads(omp_get_max_threads());
+#endif
+}
+
+void Scene::setThreads(int n) { forces.setThreads(n); }
+
+void Scene::setDt(Real value) {
+    if (!std::isfinite(value) || value <= 0)
+        throw std::invalid_argument("O.dt must be positive and finite (got " + std::to_string(value) + ")");
+    dt = value;
+}
+
+void Scene::setEngines(const std::vector<std::shared_ptr<Engine>>& e) {
+    for (const auto& x : e)
+        if (!x) throw std::invalid_argument("O.engines: None is not an engine");
+    std::lock_guard<std::mutex> lock(enginesMutex);
+    if (inStep) {
+        nextEngines = e;
+        hasNextEngines = true;
+    } else {
+        engines = e;
+    }
+}
+
+void Scene::moveToNextTimeStep() {
+    {
+        std::lock_guard<std::mutex> lock(enginesMutex);
+        inStep = true;
+    }
+    forces.resize(bodies.size());
+    interactions.resizeBodies(bodies.size());
+    struct StepEnd { // leaves inStep and applies an O.engines change made during the step
+        Scene& s;
+        ~StepEnd() {
+            std::lock_guard<std::mutex> lock(s.enginesMutex);
+            s.inStep = false;
+            if (s.hasNextEngines) {
+                s.engines = std::move(s.nextEngines);
+                s.nextEngines.clear();
+                s.hasNextEngines = false;
+            }
+        }
+    } stepEnd{*this};
+    const auto running = engines; // engines may be replaced from inside a step
+    for (const auto& e : running) {
+        e->scene = this;
+        if (e->dead || !e->isActivated()) continue;
+        e->action();
+    }
+    ++iter;
+    time += dt;
+}
+
+Body::id_t Scene::appendBody(const std::shared_ptr<Body>& b) {
+    const Body::id_t id = bodies.insert(b);
+    forces.resize(bodies.size());
+    interactions.resizeBodies(bodies.size());
+    return id;
+}
+
+void Scene::eraseBody(Body::id_t id) {
+    if (!bodies.exists(id)) throw std::out_of_range("Body #" + std::to_string(id) + " does not exist.");
+    interactions.eraseBody(id);
+    bodies.erase(id);
+}
+
+int Scene::appendMaterial(const std::shared_ptr<Material>& m) {
+    if (!m) throw std::invalid_argument("cannot append None to O.materials");
+    if (m->id >= 0) throw std::invalid_argument("Material already has id " + std::to_string(m->id) + "; appending it twice is not allowed.");
+    m->id = (int)materials.size();
+    materials.push_back(m);
+    return m->id;
+}
+
+} // namespace yade

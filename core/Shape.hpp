@@ -1,0 +1,21 @@
+// Geometry of a particle, independent of its position and orientation (1.2.1).
+#pragma once
+#include <lib/factory/ClassRegistry.hpp>
+
+namespace yade {
+
+class Shape : public Serializable {
+public:
+    Vector3r color = Vector3r(1, 1, 1);
+    bool wire = false;
+    bool highlight = false;
+    template <class V> void visit(V& v) {
+        Serializable::visit(v);
+        v.attr("color", color, "Color for rendering (RGB, components in [0,1])");
+        v.attr("wire", wire, "Render as wire frame");
+        v.attr("highlight", highlight, "Highlight this shape in the 3D view");
+    }
+    YADE_INDEXABLE_ROOT(Shape)
+};
+
+} // namespace yade

@@ -1,0 +1,19 @@
+// Root of every class exposed to Python and saved to files.
+#pragma once
+#include <lib/serialization/Attr.hpp>
+#include <memory>
+#include <string>
+
+namespace yade {
+
+class Serializable : public std::enable_shared_from_this<Serializable> {
+public:
+    virtual ~Serializable() = default;
+    template <class V> void visit(V&) {}
+    // Name of the most derived registered class (looked up in the class registry).
+    std::string getClassName() const;
+    // Called after attributes were set from Python or a file; recompute derived data here.
+    virtual void postLoad() {}
+};
+
+} // namespace yade

@@ -1,0 +1,8 @@
+#include <core/Scene.hpp>
+#include <pkg/common/ForceResetter.hpp>
+
+namespace yade {
+
+void ForceResetter::action() { scene->forces.reset(); }
+
+} // namespace yade

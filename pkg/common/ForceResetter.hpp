@@ -1,0 +1,13 @@
+// Zeroes the per-step forces and torques at the start of each step (1.2.1).
+#pragma once
+#include <core/Engine.hpp>
+
+namespace yade {
+
+class ForceResetter : public GlobalEngine {
+public:
+    template <class V> void visit(V& v) { GlobalEngine::visit(v); }
+    void action() override;
+};
+
+} // namespace yade

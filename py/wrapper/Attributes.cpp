@@ -1,0 +1,211 @@
+#include <cmath>
+#include <py/wrapper/Attributes.hpp>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace yade {
+
+const ClassInfo& classInfoOf(const Serializable& s) { return ClassRegistry::instance().get(typeid(s)); }
+
+static const char* kindName(AttrKind k) {
+    switch (k) {
+        case AttrKind::Bool: return "bool";
+        case AttrKind::Int:
+        case AttrKind::Long: return "int";
+        case AttrKind::Real: return "float";
+        case AttrKind::String: return "str";
+        case AttrKind::Vector2r: return "Vector2";
+        case AttrKind::Vector2i: return "Vector2i";
+        case AttrKind::Vector3r: return "Vector3";
+        case AttrKind::Vector3i: return "Vector3i";
+        case AttrKind::Vector6r: return "Vector6";
+        case AttrKind::Matrix3r: return "Matrix3";
+        case AttrKind::Quaternionr: return "Quaternion";
+        case AttrKind::IntVector: return "list of int";
+        case AttrKind::RealVector: return "list of float";
+        case AttrKind::StringVector: return "list of str";
+        case AttrKind::Vector3rVector: return "list of Vector3";
+        case AttrKind::Ptr:
+        case AttrKind::PtrVector: return "object";
+    }
+    return "?";
+}
+
+static std::string pointeeName(const AttrInfo& a) {
+    const ClassInfo* c = ClassRegistry::instance().find(*a.pointee);
+    return c ? c->name : std::string("object");
+}
+
+template <class T> static py::object view(T* p, py::handle owner) {
+    return py::cast(p, py::return_value_policy::reference_internal, owner);
+}
+
+py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
+    void* p = a.address(s);
+    switch (a.kind) {
+        case AttrKind::Bool: return py::cast(*static_cast<bool*>(p));
+        case AttrKind::Int: return py::cast(*static_cast<int*>(p));
+        case AttrKind::Long: return py::cast(*static_cast<long long*>(p));
+        case AttrKind::Real: return py::cast(*static_cast<Real*>(p));
+        case AttrKind::String: return py::cast(*static_cast<std::string*>(p));
+        case AttrKind::Vector2r: return view(static_cast<Vector2r*>(p), owner);
+        case AttrKind::Vector2i: return view(static_cast<Vector2i*>(p), owner);
+        case AttrKind::Vector3r: return view(static_cast<Vector3r*>(p), owner);
+        case AttrKind::Vector3i: return view(static_cast<Vector3i*>(p), owner);
+        case AttrKind::Vector6r: return view(static_cast<Vector6r*>(p), owner);
+        case AttrKind::Matrix3r: return view(static_cast<Matrix3r*>(p), owner);
+        case AttrKind::Quaternionr: return view(static_cast<Quaternionr*>(p), owner);
+        case AttrKind::IntVector: return py::cast(*static_cast<std::vector<int>*>(p));
+        case AttrKind::RealVector: return py::cast(*static_cast<std::vector<Real>*>(p));
+        case AttrKind::StringVector: return py::cast(*static_cast<std::vector<std::string>*>(p));
+        case AttrKind::Vector3rVector: return py::cast(*static_cast<std::vector<Vector3r>*>(p));
+        case AttrKind::Ptr: return py::cast(a.getPtr(p));
+        case AttrKind::PtrVector: return py::cast(a.getPtrVector(p));
+    }
+    return py::none();
+}
+
+static bool allFinite(const Real* x, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(x[i])) return false;
+    return true;
+}
+
+// Applies the positive / nonNegative / finite flags to n real components.
+static void checkValue(const std::string& where, const AttrInfo& a, const Real* x, int n) {
+    for (int i = 0; i < n; ++i) {
+        const bool fin = std::isfinite(x[i]);
+        const char* problem = nullptr;
+        if (a.has(Attr::positive) && !(fin && x[i] > 0)) problem = "must be positive and finite";
+        else if (a.has(Attr::nonNegative) && !(fin && x[i] >= 0)) problem = "must be non-negative and finite";
+        else if (a.has(Attr::finite) && !fin) problem = "must be finite";
+        if (problem) {
+            std::ostringstream os;
+            os << where << " " << problem << " (got ";
+            for (int j = 0; j < n; ++j) os << (j ? ", " : "") << x[j];
+            os << ")";
+            throw py::value_error(os.str());
+        }
+    }
+}
+
+template <class T> static T castOr(py::handle v, const std::string& where, const std::string& expected) {
+    try {
+        return py::cast<T>(v);
+    } catch (py::cast_error&) {
+        throw py::type_error(where + ": expected " + expected + ", got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+    }
+}
+
+template <class M> static void setMatrixLike(void* p, py::handle v, const std::string& where, const AttrInfo& a) {
+    M m = castOr<M>(v, where, kindName(a.kind));
+    if constexpr (std::is_same_v<typename M::Scalar, Real>) checkValue(where, a, m.data(), (int)m.size());
+    *static_cast<M*>(p) = m;
+}
+
+void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
+    const std::string where = classInfoOf(s).name + "." + a.name;
+    if (a.has(Attr::readonly)) throw py::attribute_error(where + " is read-only");
+    void* p = a.address(s);
+    const std::string expected = kindName(a.kind);
+    switch (a.kind) {
+        case AttrKind::Bool:
+            if (!py::isinstance<py::bool_>(v) && !py::isinstance<py::int_>(v))
+                throw py::type_error(where + ": expected bool, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+            *static_cast<bool*>(p) = py::isinstance<py::bool_>(v) ? py::cast<bool>(v) : py::cast<long long>(v) != 0;
+            break;
+        case AttrKind::Int:
+            if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");
+            *static_cast<int*>(p) = castOr<int>(v, where, expected);
+            break;
+        case AttrKind::Long:
+            if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");
+            *static_cast<long long*>(p) = castOr<long long>(v, where, expected);
+            break;
+        case AttrKind::Real: {
+            if (py::isinstance<py::str>(v) || py::isinstance<py::bool_>(v))
+                throw py::type_error(where + ": expected float, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+            Real x = castOr<Real>(v, where, expected);
+            checkValue(where, a, &x, 1);
+            *static_cast<Real*>(p) = x;
+            break;
+        }
+        case AttrKind::String:
+            if (!py::isinstance<py::str>(v)) throw py::type_error(where + ": expected str, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
+            *static_cast<std::string*>(p) = py::cast<std::string>(v);
+            break;
+        case AttrKind::Vector2r: setMatrixLike<Vector2r>(p, v, where, a); break;
+        case AttrKind::Vector2i: setMatrixLike<Vector2i>(p, v, where, a); break;
+        case AttrKind::Vector3r: setMatrixLike<Vector3r>(p, v, where, a); break;
+        case AttrKind::Vector3i: setMatrixLike<Vector3i>(p, v, where, a); break;
+        case AttrKind::Vector6r: setMatrixLike<Vector6r>(p, v, where, a); break;
+        case AttrKind::Matrix3r: setMatrixLike<Matrix3r>(p, v, where, a); break;
+        case AttrKind::Quaternionr: {
+            Quaternionr q = castOr<Quaternionr>(v, where, expected);
+            if (!allFinite(q.coeffs().data(), 4) || q.norm() == 0) throw py::value_error(where + " must be a finite non-zero quaternion");
+            *static_cast<Quaternionr*>(p) = q.normalized();
+            break;
+        }
+        case AttrKind::IntVector: *static_cast<std::vector<int>*>(p) = castOr<std::vector<int>>(v, where, expected); break;
+        case AttrKind::RealVector: {
+            auto x = castOr<std::vector<Real>>(v, where, expected);
+            checkValue(where, a, x.data(), (int)x.size());
+            *static_cast<std::vector<Real>*>(p) = x;
+            break;
+        }
+        case AttrKind::StringVector: *static_cast<std::vector<std::string>*>(p) = castOr<std::vector<std::string>>(v, where, expected); break;
+        case AttrKind::Vector3rVector: {
+            auto x = castOr<std::vector<Vector3r>>(v, where, expected);
+            for (const auto& e : x) checkValue(where, a, e.data(), 3);
+            *static_cast<std::vector<Vector3r>*>(p) = x;
+            break;
+        }
+        case AttrKind::Ptr: {
+            std::shared_ptr<Serializable> obj;
+            if (!v.is_none()) obj = castOr<std::shared_ptr<Serializable>>(v, where, pointeeName(a));
+            if (!a.setPtr(p, obj)) throw py::type_error(where + ": expected " + pointeeName(a) + ", got " + obj->getClassName());
+            break;
+        }
+        case AttrKind::PtrVector: {
+            if (py::isinstance<py::str>(v) || !py::isinstance<py::sequence>(v))
+                throw py::type_error(where + ": expected a list of " + pointeeName(a));
+            std::vector<std::shared_ptr<Serializable>> objs;
+            for (py::handle item : v) {
+                auto obj = item.is_none() ? nullptr : castOr<std::shared_ptr<Serializable>>(item, where, "a list of " + pointeeName(a));
+                if (!obj || !std::dynamic_pointer_cast<Serializable>(obj))
+                    throw py::type_error(where + ": expected a list of " + pointeeName(a) + ", got None in it");
+                objs.push_back(obj);
+            }
+            if (!a.setPtrVector(p, objs)) {
+                for (const auto& o : objs)
+                    if (!ClassRegistry::instance().isSubclass(o->getClassName(), pointeeName(a)))
+                        throw py::type_error(where + ": expected a list of " + pointeeName(a) + ", got " + o->getClassName() + " in it");
+                throw py::type_error(where + ": expected a list of " + pointeeName(a));
+            }
+            break;
+        }
+    }
+    s.postLoad();
+}
+
+void defineAttrProperties(py::handle cls, const ClassInfo& info) {
+    auto property = py::module_::import("builtins").attr("property");
+    for (size_t i = info.ownAttrsBegin; i < info.attrs.size(); ++i) {
+        const AttrInfo* a = &info.attrs[i];
+        if (a->has(Attr::hidden)) continue;
+        py::cpp_function getter([a](py::object self) { return getAttr(py::cast<Serializable&>(self), *a, self); });
+        py::cpp_function setter([a](py::object self, py::object v) { setAttr(py::cast<Serializable&>(self), *a, v); });
+        std::string doc = a->doc + " (" + kindName(a->kind) + (a->has(Attr::readonly) ? ", read-only" : "") + ")";
+        cls.attr(a->name.c_str()) = property(getter, setter, py::none(), doc);
+    }
+}
+
+py::dict attrDict(Serializable& s, py::handle owner) {
+    py::dict d;
+    for (const AttrInfo& a : classInfoOf(s).attrs)
+        if (!a.has(Attr::hidden)) d[a.name.c_str()] = getAttr(s, a, owner);
+    return d;
+}
+
+} // namespace yade

@@ -1,0 +1,169 @@
+// Python classes for every registered C++ class, made generically from the attribute table;
+// the few hand-written members below are derived properties and methods, not attributes.
+#include <AllHeaders.hpp>
+#include <functional>
+#include <py/wrapper/Attributes.hpp>
+#include <py/wrapper/Classes.hpp>
+#include <py/wrapper/OmegaWrapper.hpp>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace yade {
+
+using CtorArgs = std::function<void(Serializable&, py::args)>;
+
+// Classes that take positional constructor arguments, e.g. BoundDispatcher([Bo1_Sphere_Aabb()]).
+static std::map<std::string, CtorArgs>& ctorArgHandlers() {
+    static std::map<std::string, CtorArgs> handlers;
+    return handlers;
+}
+
+static const CtorArgs* findCtorArgs(const ClassInfo& info) {
+    for (const ClassInfo* c = &info; c; c = c->baseName.empty() ? nullptr : ClassRegistry::instance().find(c->baseName)) {
+        auto it = ctorArgHandlers().find(c->name);
+        if (it != ctorArgHandlers().end()) return &it->second;
+    }
+    return nullptr;
+}
+
+static std::shared_ptr<Serializable> construct(const ClassInfo& info, py::handle cls, py::args args, py::kwargs kw) {
+    std::shared_ptr<Serializable> obj = info.factory();
+    if (args.size() > 0) {
+        const CtorArgs* handler = findCtorArgs(info);
+        if (!handler) throw py::type_error(info.name + "() takes no positional arguments; give attributes as keywords, e.g. " + info.name + "(label='x')");
+        (*handler)(*obj, args);
+    }
+    py::object wrapper; // made only for Python-side properties such as State.blockedDOFs
+    for (auto item : kw) {
+        const std::string name = py::cast<std::string>(item.first);
+        const AttrInfo* a = info.findAttr(name);
+        if (a && !a->has(Attr::hidden)) {
+            setAttr(*obj, *a, item.second);
+        } else if (py::hasattr(cls, name.c_str()) && py::isinstance(cls.attr(name.c_str()), py::module_::import("builtins").attr("property"))) {
+            if (!wrapper) wrapper = py::cast(obj);
+            wrapper.attr(name.c_str()) = item.second;
+        } else {
+            throw py::attribute_error(info.name + " has no attribute '" + name + "'");
+        }
+    }
+    obj->postLoad();
+    return obj;
+}
+
+template <class T, class Base> void bindClass(py::module_& m, const char* name) {
+    const ClassInfo* info = &ClassRegistry::instance().get(typeid(T));
+    auto init = [info] {
+        return py::init([info](py::args a, py::kwargs k) {
+            return std::static_pointer_cast<T>(construct(*info, py::type::handle_of<T>(), a, k));
+        });
+    };
+    if constexpr (std::is_same_v<T, Base>) {
+        py::class_<T, std::shared_ptr<T>> cls(m, name);
+        cls.def(init());
+        defineAttrProperties(cls, *info);
+    } else {
+        py::class_<T, Base, std::shared_ptr<T>> cls(m, name);
+        cls.def(init());
+        defineAttrProperties(cls, *info);
+    }
+}
+
+static std::string hexAddress(const void* p) {
+    std::ostringstream os;
+    os << p;
+    return os.str();
+}
+
+template <class D> static void setFunctors(D& d, py::handle list, const char* what) {
+    const AttrInfo* a = ClassRegistry::instance().get(typeid(D)).findAttr("functors");
+    try {
+        setAttr(d, *a, list);
+    } catch (py::error_already_set&) {
+        throw;
+    } catch (py::type_error& e) {
+        throw py::type_error(std::string(what) + ": " + e.what());
+    }
+}
+
+// The Python class already bound for T, to add hand-written members to it.
+template <class T, class Base> static py::class_<T, Base, std::shared_ptr<T>> existing() {
+    return py::reinterpret_borrow<py::class_<T, Base, std::shared_ptr<T>>>(py::type::handle_of<T>());
+}
+
+// Members that are computed, not stored: derived properties and methods.
+static void bindExtras(py::module_& m) {
+    auto serCls = py::reinterpret_borrow<py::class_<Serializable, std::shared_ptr<Serializable>>>(py::type::handle_of<Serializable>());
+    serCls.def("dict", [](py::object self) { return attrDict(py::cast<Serializable&>(self), self); },
+                  "Attributes as a dict {name: value}")
+            .def("updateAttrs", [](py::object self, py::dict d) {
+                Serializable& s = py::cast<Serializable&>(self);
+                for (auto item : d) {
+                    const std::string n = py::cast<std::string>(item.first);
+                    if (!py::hasattr(self, n.c_str())) throw py::attribute_error(s.getClassName() + " has no attribute '" + n + "'");
+                    self.attr(n.c_str()) = item.second;
+                }
+            }, "Set attributes from a dict")
+            .def("__repr__", [](Serializable& s) { return "<" + s.getClassName() + " instance at " + hexAddress(&s) + ">"; })
+            .def("__eq__", [](Serializable& a, py::object b) { return py::isinstance<Serializable>(b) && &a == &py::cast<Serializable&>(b); })
+            .def("__ne__", [](Serializable& a, py::object b) { return !(py::isinstance<Serializable>(b) && &a == &py::cast<Serializable&>(b)); })
+            .def("__hash__", [](Serializable& a) { return std::hash<const void*>()(&a); });
+
+    for (const char* family : {"Shape", "Material", "Bound", "IGeom", "IPhys", "State"}) {
+        m.attr(family).attr("dispIndex") = py::module_::import("builtins").attr("property")(
+                py::cpp_function([](py::object self) { return classInfoOf(py::cast<Serializable&>(self)).classIndex; }),
+                py::none(), py::none(), "Index of the class for dispatch (read-only)");
+    }
+
+    existing<State, Serializable>()
+            .def_property("blockedDOFs", &State::blockedDOFs, &State::setBlockedDOFs,
+                    "Degrees of freedom the integrator does not change, as a string of 'xyzXYZ' (capitals: rotations)")
+            .def("displ", &State::displ, "Displacement from refPos")
+            .def("rot", &State::rot, "Rotation from refOri (axis × angle)");
+
+    existing<Body, Serializable>()
+            .def_property("mat", [](py::object self) { return self.attr("material"); },
+                    [](py::object self, py::object v) { self.attr("material") = v; }, "Alias of material")
+            .def("intrs", [](Body& b) { return bodyInteractions(b); }, "Interactions (real ones) of this body in O.interactions")
+            .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; });
+
+    existing<Interaction, Serializable>()
+            .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)");
+
+    ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<BoundDispatcher&>(s), a[0], "BoundDispatcher"); };
+    ctorArgHandlers()["IGeomDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IGeomDispatcher&>(s), a[0], "IGeomDispatcher"); };
+    ctorArgHandlers()["IPhysDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IPhysDispatcher&>(s), a[0], "IPhysDispatcher"); };
+    ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<LawDispatcher&>(s), a[0], "LawDispatcher"); };
+
+    existing<BoundDispatcher, Dispatcher>()
+            .def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) -> py::object {
+                BoundFunctor* f = s ? d.getFunctor(*s) : nullptr;
+                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+            }, "The functor that would handle this shape (None if none)");
+    existing<IGeomDispatcher, Dispatcher>()
+            .def("dispFunctor", [](IGeomDispatcher& d, std::shared_ptr<Shape> a, std::shared_ptr<Shape> b) -> py::object {
+                IGeomFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
+                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+            }, "The functor that would handle this pair of shapes (None if none)");
+    existing<IPhysDispatcher, Dispatcher>()
+            .def("dispFunctor", [](IPhysDispatcher& d, std::shared_ptr<Material> a, std::shared_ptr<Material> b) -> py::object {
+                IPhysFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
+                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+            }, "The functor that would handle this pair of materials (None if none)");
+    existing<LawDispatcher, Dispatcher>()
+            .def("dispFunctor", [](LawDispatcher& d, std::shared_ptr<IGeom> a, std::shared_ptr<IPhys> b) -> py::object {
+                LawFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
+                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+            }, "The functor that would handle this (IGeom, IPhys) pair (None if none)");
+}
+
+void bindAllClasses(py::module_& m) {
+#define YADE_CLASS(Class, Base) bindClass<Class, Base>(m, #Class);
+#include <core/classes.def>
+#include <pkg/common/classes.def>
+#include <pkg/dem/classes.def>
+#undef YADE_CLASS
+    bindExtras(m);
+}
+
+} // namespace yade

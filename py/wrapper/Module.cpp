@@ -1,0 +1,28 @@
+// The compiled part of the yade package.
+#include <pkg/RegisterClasses.hpp>
+#include <py/wrapper/Classes.hpp>
+#include <py/wrapper/Math.hpp>
+#include <py/wrapper/OmegaWrapper.hpp>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+PYBIND11_MODULE(_yade, m) {
+    m.doc() = "Yade-compatible DEM engine (C++ core)";
+    yade::registerAllClasses();
+    yade::registerMath(m);
+    yade::bindAllClasses(m);
+    yade::bindOmega(m);
+    m.def("setNumThreads", [](int n) {
+        if (n < 1) throw pybind11::value_error("number of threads must be >= 1");
+#ifdef _OPENMP
+        omp_set_num_threads(n);
+#endif
+        yade::omega().scene().setThreads(n);
+    }, "Set the number of OpenMP threads");
+#ifdef _OPENMP
+    m.attr("openmp") = true;
+#else
+    m.attr("openmp") = false;
+#endif
+}

@@ -1,0 +1,291 @@
+// Python's O object and its containers. Proxies always act on the current scene.
+#include <chrono>
+#include <core/Functor.hpp>
+#include <py/wrapper/Attributes.hpp>
+#include <py/wrapper/OmegaWrapper.hpp>
+#include <pybind11/stl.h>
+#include <set>
+
+namespace py = pybind11;
+
+namespace yade {
+
+Omega& omega() {
+    static Omega* o = new Omega(); // never destroyed: the loop thread may outlive static destructors
+    return *o;
+}
+
+static Scene& scene() { return omega().scene(); }
+
+py::list bodyInteractions(const Body& b) {
+    py::list r;
+    Scene& s = scene();
+    if (b.id < 0 || !s.bodies.exists(b.id) || s.bodies[b.id].get() != &b) return r;
+    for (const auto& I : s.interactions.withBody(b.id))
+        if (I->isReal()) r.append(py::cast(I));
+    return r;
+}
+
+static void collectLabels(const std::shared_ptr<Serializable>& obj, std::set<Serializable*>& seen, py::module_& builtins) {
+    if (!obj || !seen.insert(obj.get()).second) return;
+    std::string label;
+    if (auto* e = dynamic_cast<Engine*>(obj.get())) label = e->label;
+    else if (auto* f = dynamic_cast<Functor*>(obj.get())) label = f->label;
+    else return; // only engines and functors (and what they hold) carry labels
+    if (!label.empty()) builtins.attr(label.c_str()) = py::cast(obj);
+    for (const AttrInfo& a : classInfoOf(*obj).attrs) {
+        void* p = a.address(*obj);
+        if (a.kind == AttrKind::Ptr) collectLabels(a.getPtr(p), seen, builtins);
+        else if (a.kind == AttrKind::PtrVector)
+            for (const auto& child : a.getPtrVector(p)) collectLabels(child, seen, builtins);
+    }
+}
+
+void injectLabels(const std::vector<std::shared_ptr<Engine>>& engines) {
+    py::module_ builtins = py::module_::import("builtins");
+    std::set<Serializable*> seen;
+    for (const auto& e : engines) collectLabels(e, seen, builtins);
+}
+
+namespace {
+// Python index → id, with negative indices from the end.
+long normIndex(long i, size_t n) { return i < 0 ? i + (long)n : i; }
+
+struct BodyContainerProxy {
+    py::object append(py::object arg) {
+        Scene& s = scene();
+        if (py::isinstance<Body>(arg)) return py::cast(s.appendBody(py::cast<std::shared_ptr<Body>>(arg)));
+        if (!py::isinstance<py::sequence>(arg) || py::isinstance<py::str>(arg))
+            throw py::type_error("O.bodies.append: expected a Body or a list of bodies, got " + std::string(py::str(py::type::of(arg).attr("__name__"))));
+        std::vector<std::shared_ptr<Body>> bodies;
+        for (py::handle h : arg) {
+            if (!py::isinstance<Body>(h)) throw py::type_error("O.bodies.append: every item must be a Body, got " + std::string(py::str(py::type::of(h).attr("__name__"))));
+            bodies.push_back(py::cast<std::shared_ptr<Body>>(h));
+        }
+        std::set<Body*> unique;
+        for (const auto& b : bodies) // checked before any is appended, so a failure appends nothing
+            if (b->id >= 0 || !unique.insert(b.get()).second)
+                throw py::index_error("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
+        py::list ids;
+        for (const auto& b : bodies) ids.append(s.appendBody(b));
+        return std::move(ids);
+    }
+    py::object get(long i) {
+        Scene& s = scene();
+        const long id = normIndex(i, s.bodies.size());
+        if (id < 0 || id >= (long)s.bodies.size()) throw py::index_error("Body id " + std::to_string(i) + " out of range.");
+        return s.bodies[id] ? py::cast(s.bodies[id]) : py::none();
+    }
+    size_t len() { return scene().bodies.size(); }
+    py::iterator iter() {
+        py::list l;
+        for (const auto& b : scene().bodies)
+            if (b) l.append(py::cast(b));
+        return py::iter(l);
+    }
+    bool erase(long id) {
+        scene().eraseBody((Body::id_t)id);
+        return true;
+    }
+    void clear() {
+        Scene& s = scene();
+        s.interactions.clear();
+        for (const auto& b : s.bodies)
+            if (b) b->id = -1;
+        s.bodies.clear();
+    }
+};
+
+struct InteractionContainerProxy {
+    py::object get(py::tuple ids) {
+        if (ids.size() != 2) throw py::type_error("O.interactions[id1,id2] takes two body ids");
+        const auto& I = scene().interactions.find(py::cast<int>(ids[0]), py::cast<int>(ids[1]));
+        if (!I) throw py::index_error("No such interaction: ##" + std::string(py::str(ids[0])) + "+" + std::string(py::str(ids[1])));
+        return py::cast(I);
+    }
+    bool has(int a, int b, bool onlyReal) {
+        const auto& I = scene().interactions.find(a, b);
+        return I && (!onlyReal || I->isReal());
+    }
+    size_t len() { return scene().interactions.size(); }
+    py::list all(bool onlyReal) {
+        py::list l;
+        for (const auto& I : scene().interactions)
+            if (!onlyReal || I->isReal()) l.append(py::cast(I));
+        return l;
+    }
+    py::list withBody(int id) {
+        py::list l;
+        for (const auto& I : scene().interactions.withBody(id))
+            if (I->isReal()) l.append(py::cast(I));
+        return l;
+    }
+    void erase(int a, int b) {
+        if (!scene().interactions.erase(a, b)) throw py::index_error("No such interaction: ##" + std::to_string(a) + "+" + std::to_string(b));
+    }
+};
+
+void checkBodyId(long id) {
+    if (id < 0 || id >= (long)scene().bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
+    scene().forces.resize(scene().bodies.size());
+}
+
+struct ForceContainerProxy {
+    Vector3r f(long id, bool) { checkBodyId(id); return scene().forces.getForce((int)id); }
+    Vector3r t(long id, bool) { checkBodyId(id); return scene().forces.getTorque((int)id); }
+    void addF(long id, const Vector3r& v, bool permanent) {
+        checkBodyId(id);
+        if (!isFinite(v)) throw py::value_error("O.forces.addF: force must be finite");
+        permanent ? scene().forces.addPermForce((int)id, v) : scene().forces.addForce((int)id, v);
+    }
+    void addT(long id, const Vector3r& v, bool permanent) {
+        checkBodyId(id);
+        if (!isFinite(v)) throw py::value_error("O.forces.addT: torque must be finite");
+        permanent ? scene().forces.addPermTorque((int)id, v) : scene().forces.addTorque((int)id, v);
+    }
+    Vector3r permF(long id) { checkBodyId(id); return scene().forces.getPermForce((int)id); }
+    Vector3r permT(long id) { checkBodyId(id); return scene().forces.getPermTorque((int)id); }
+};
+
+struct MaterialContainerProxy {
+    py::object append(py::object arg) {
+        Scene& s = scene();
+        if (py::isinstance<Material>(arg)) return py::cast(s.appendMaterial(py::cast<std::shared_ptr<Material>>(arg)));
+        if (!py::isinstance<py::sequence>(arg) || py::isinstance<py::str>(arg))
+            throw py::type_error("O.materials.append: expected a Material or a list of materials");
+        py::list ids;
+        for (py::handle h : arg) {
+            if (!py::isinstance<Material>(h)) throw py::type_error("O.materials.append: every item must be a Material");
+            ids.append(s.appendMaterial(py::cast<std::shared_ptr<Material>>(h)));
+        }
+        return std::move(ids);
+    }
+    std::shared_ptr<Material> get(py::object key) {
+        auto& mats = scene().materials;
+        if (py::isinstance<py::str>(key)) {
+            const std::string label = py::cast<std::string>(key);
+            for (const auto& m : mats)
+                if (m->label == label) return m;
+            throw py::key_error("No material labeled '" + label + "'.");
+        }
+        const long i = normIndex(py::cast<long>(key), mats.size());
+        if (i < 0 || i >= (long)mats.size()) throw py::index_error("Material id " + std::string(py::str(key)) + " out of range.");
+        return mats[i];
+    }
+    long index(const std::string& label) { return get(py::str(label))->id; }
+    size_t len() { return scene().materials.size(); }
+    py::iterator iter() { return py::iter(py::cast(scene().materials)); }
+};
+
+struct TagsProxy {
+    std::string get(const std::string& k) {
+        auto& t = scene().tags;
+        auto it = t.find(k);
+        if (it == t.end()) throw py::key_error("No such tag: " + k);
+        return it->second;
+    }
+    void set(const std::string& k, const std::string& v) { scene().tags[k] = v; }
+    bool has(const std::string& k) { return scene().tags.count(k) > 0; }
+    std::vector<std::string> keys() {
+        std::vector<std::string> r;
+        for (const auto& kv : scene().tags) r.push_back(kv.first);
+        return r;
+    }
+    py::list items() {
+        py::list r;
+        for (const auto& kv : scene().tags) r.append(py::make_tuple(kv.first, kv.second));
+        return r;
+    }
+};
+
+struct OmegaProxy {};
+} // namespace
+
+void bindOmega(py::module_& m) {
+    py::class_<BodyContainerProxy>(m, "BodyContainer", "O.bodies: bodies indexed by id")
+            .def("append", &BodyContainerProxy::append, py::arg("body"), "Append a Body (returns its id) or a list of bodies (returns their ids)")
+            .def("__getitem__", &BodyContainerProxy::get)
+            .def("__len__", &BodyContainerProxy::len)
+            .def("__iter__", &BodyContainerProxy::iter)
+            .def("erase", &BodyContainerProxy::erase, py::arg("id"), "Remove a body and its interactions")
+            .def("clear", &BodyContainerProxy::clear, "Remove all bodies and interactions");
+    py::class_<InteractionContainerProxy>(m, "InteractionContainer", "O.interactions: interactions indexed by a pair of ids")
+            .def("__getitem__", &InteractionContainerProxy::get)
+            .def("__len__", &InteractionContainerProxy::len)
+            .def("__iter__", [](InteractionContainerProxy& p) { return py::iter(p.all(true)); }, "Iterate over real interactions")
+            .def("has", &InteractionContainerProxy::has, py::arg("id1"), py::arg("id2"), py::arg("onlyReal") = false)
+            .def("all", &InteractionContainerProxy::all, py::arg("onlyReal") = false)
+            .def("withBody", &InteractionContainerProxy::withBody, py::arg("id"), "Real interactions of body #id")
+            .def("countReal", [](InteractionContainerProxy&) { return scene().interactions.countReal(); })
+            .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"))
+            .def("clear", [](InteractionContainerProxy&) { scene().interactions.clear(); });
+    py::class_<ForceContainerProxy>(m, "ForceContainer", "O.forces: forces and torques of the current step")
+            .def("f", &ForceContainerProxy::f, py::arg("id"), py::arg("sync") = false, "Force on body #id")
+            .def("t", &ForceContainerProxy::t, py::arg("id"), py::arg("sync") = false, "Torque on body #id")
+            .def("addF", &ForceContainerProxy::addF, py::arg("id"), py::arg("f"), py::arg("permanent") = false)
+            .def("addT", &ForceContainerProxy::addT, py::arg("id"), py::arg("t"), py::arg("permanent") = false)
+            .def("permF", &ForceContainerProxy::permF, py::arg("id"))
+            .def("permT", &ForceContainerProxy::permT, py::arg("id"));
+    py::class_<MaterialContainerProxy>(m, "MaterialContainer", "O.materials: shared materials")
+            .def("append", &MaterialContainerProxy::append)
+            .def("__getitem__", &MaterialContainerProxy::get)
+            .def("__len__", &MaterialContainerProxy::len)
+            .def("__iter__", &MaterialContainerProxy::iter)
+            .def("index", &MaterialContainerProxy::index, py::arg("label"));
+    py::class_<TagsProxy>(m, "TagsWrapper", "O.tags: string tags of the simulation")
+            .def("__getitem__", &TagsProxy::get)
+            .def("__setitem__", &TagsProxy::set)
+            .def("__contains__", &TagsProxy::has)
+            .def("has_key", &TagsProxy::has)
+            .def("keys", &TagsProxy::keys)
+            .def("items", &TagsProxy::items);
+
+    using release = py::call_guard<py::gil_scoped_release>;
+    static const auto startTime = std::chrono::steady_clock::now();
+    py::class_<OmegaProxy>(m, "Omega", "The simulation controller; the instance is O")
+            .def_property_readonly("bodies", [](OmegaProxy&) { return BodyContainerProxy(); })
+            .def_property_readonly("interactions", [](OmegaProxy&) { return InteractionContainerProxy(); })
+            .def_property_readonly("forces", [](OmegaProxy&) { return ForceContainerProxy(); })
+            .def_property_readonly("materials", [](OmegaProxy&) { return MaterialContainerProxy(); })
+            .def_property_readonly("tags", [](OmegaProxy&) { return TagsProxy(); })
+            .def_property("engines", [](OmegaProxy&) { return scene().getEngines(); },
+                    [](OmegaProxy&, py::object list) {
+                        if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.engines must be a list of engines");
+                        std::vector<std::shared_ptr<Engine>> engines;
+                        for (py::handle h : list) {
+                            if (!py::isinstance<Engine>(h))
+                                throw py::type_error("O.engines: " + std::string(py::str(py::repr(h))) + " is not an Engine");
+                            engines.push_back(py::cast<std::shared_ptr<Engine>>(h));
+                        }
+                        scene().setEngines(engines);
+                        injectLabels(engines);
+                    }, "The simulation loop: engines run in this order every step")
+            .def_property_readonly("iter", [](OmegaProxy&) { return scene().iter; }, "Current iteration (step) number")
+            .def_property_readonly("time", [](OmegaProxy&) { return scene().time; }, "Simulated time [s]")
+            .def_property_readonly("realtime", [](OmegaProxy&) {
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime).count();
+            }, "Wall-clock seconds since start-up")
+            .def_property("dt", [](OmegaProxy&) { return scene().dt; }, [](OmegaProxy&, Real v) { scene().setDt(v); }, "Time step [s]")
+            .def_property("stopAtIter", [](OmegaProxy&) { return scene().stopAtIter; },
+                    [](OmegaProxy&, long long v) { scene().stopAtIter = v; }, "The loop stops when O.iter reaches this value")
+            .def_property_readonly("running", [](OmegaProxy&) { return omega().isRunning(); })
+            .def_property("periodic", [](OmegaProxy&) { return scene().isPeriodic; },
+                    [](OmegaProxy&, bool v) {
+                        if (v) throw py::value_error("periodic cells are not supported yet");
+                        scene().isPeriodic = false;
+                    }, "Whether the scene is periodic (always False for now)")
+            .def_property_readonly("numThreads", [](OmegaProxy&) { return scene().threads(); })
+            .def("step", [](OmegaProxy&) { omega().step(); }, release(), "Run one step and return")
+            .def("run", [](OmegaProxy&, long long nSteps, bool wait) {
+                omega().run(nSteps);
+                if (wait) omega().wait();
+            }, release(), py::arg("nSteps") = -1, py::arg("wait") = false,
+                    "Run in the background (returns at once); nSteps>0 stops after that many steps; wait=True blocks until it stops")
+            .def("pause", [](OmegaProxy&) { omega().pause(); }, release(), "Stop the loop after the current step")
+            .def("wait", [](OmegaProxy&) { omega().wait(); }, release(), "Block until the loop stops; raise what stopped it")
+            .def("reset", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the scene with an empty one")
+            .def("switchWorld", [](OmegaProxy&) { omega().switchWorld(); }, release(), "Toggle between the primary and the secondary scene");
+    m.attr("O") = OmegaProxy();
+}
+
+} // namespace yade

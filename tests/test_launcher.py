@@ -1,0 +1,139 @@
+"""Tests of the ./yade launcher, run as a subprocess.
+
+They need the built package in <repo>/build (or the directory named by the
+YADE_BUILD_DIR environment variable, which is passed through to the launcher).
+"""
+
+import os
+import pathlib
+import subprocess
+import textwrap
+
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parent.parent
+LAUNCHER = REPO / "yade"
+BUILD = pathlib.Path(os.environ.get("YADE_BUILD_DIR") or REPO / "build")
+
+pytestmark = pytest.mark.skipif(not (BUILD / "yade").is_dir(),
+                                reason="yade is not built (run bash scripts/setup.sh)")
+
+
+def run(*args, stdin=None, timeout=120, env_extra=None):
+    env = dict(os.environ)
+    env.pop("OMP_NUM_THREADS", None)
+    if env_extra:
+        env.update(env_extra)
+    return subprocess.run(["/usr/bin/python3", str(LAUNCHER), *map(str, args)],
+                          input=stdin if stdin is not None else "", capture_output=True,
+                          text=True, timeout=timeout, env=env, cwd=str(REPO))
+
+
+def write(tmp_path, name, body):
+    p = tmp_path / name
+    p.write_text(textwrap.dedent(body))
+    return p
+
+
+def test_help():
+    r = run("-h")
+    assert r.returncode == 0, r.stderr
+    for opt in ("-x", "-n", "-j", "--test"):
+        assert opt in r.stdout
+
+
+def test_version():
+    r = run("-v")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith("Yade ")
+
+
+def test_script_with_args(tmp_path):
+    s = write(tmp_path, "s.py", """\
+        import sys
+        print("iter=%d" % O.iter)
+        print("argv=" + ",".join(sys.argv[1:]))
+        print("name=" + __name__)
+        print("file=" + __file__)
+        """)
+    r = run("-n", "-x", s, "arg1", "-x", "--other")
+    assert r.returncode == 0, r.stderr
+    assert "iter=0" in r.stdout
+    assert "argv=arg1,-x,--other" in r.stdout
+    assert "name=__main__" in r.stdout
+    assert "file=" + str(s) in r.stdout
+    assert "Yade [" not in r.stdout  # -x: no prompt
+
+
+def test_script_exception_exits_1(tmp_path):
+    s = write(tmp_path, "bad.py", """\
+        x = 1
+        raise RuntimeError("deliberate failure")
+        """)
+    r = run("-n", "-x", s)
+    assert r.returncode == 1
+    assert "Traceback" in r.stderr
+    assert str(s) in r.stderr
+    assert "line 2" in r.stderr
+    assert "deliberate failure" in r.stderr
+
+
+def test_script_sys_exit_code(tmp_path):
+    s = write(tmp_path, "ex.py", "import sys\nsys.exit(3)\n")
+    r = run("-n", "-x", s)
+    assert r.returncode == 3
+
+
+def test_missing_script(tmp_path):
+    r = run("-n", "-x", tmp_path / "does-not-exist.py")
+    assert r.returncode == 1
+
+
+def test_threads_env(tmp_path):
+    s = write(tmp_path, "omp.py", """\
+        import os
+        print("omp=" + os.environ["OMP_NUM_THREADS"])
+        """)
+    r = run("-j", "2", "-n", "-x", s)
+    assert r.returncode == 0, r.stderr
+    assert "omp=2" in r.stdout
+    r = run("-n", "-x", s)
+    assert r.returncode == 0, r.stderr
+    assert "omp=1" in r.stdout
+
+
+def test_nogui_unsets_display(tmp_path):
+    s = write(tmp_path, "disp.py", """\
+        import os
+        print("display=%r" % os.environ.get("DISPLAY"))
+        """)
+    r = run("-n", "-x", s, env_extra={"DISPLAY": ":99"})
+    assert r.returncode == 0, r.stderr
+    assert "display=None" in r.stdout
+
+
+def test_exit_without_script():
+    r = run("-n", "-x")
+    assert r.returncode == 0, r.stderr
+
+
+def test_piped_prompt():
+    r = run("-n", stdin="print(6*7)\n")
+    assert r.returncode == 0, r.stderr
+    assert "42" in r.stdout
+    assert "Yade [1]: " in r.stdout
+
+
+def test_script_then_prompt(tmp_path):
+    s = write(tmp_path, "def.py", "answer = 40\n")
+    r = run("-n", s, stdin="print(answer + 2)\n")
+    assert r.returncode == 0, r.stderr
+    assert "42" in r.stdout
+
+
+def test_exception_without_x_drops_to_prompt(tmp_path):
+    s = write(tmp_path, "bad2.py", "before = 5\nraise ValueError('oops')\n")
+    r = run("-n", s, stdin="print(before * 2)\n")
+    assert r.returncode == 0, r.stderr
+    assert "oops" in r.stderr
+    assert "10" in r.stdout
