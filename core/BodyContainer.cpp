@@ -9,6 +9,7 @@ BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
         throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
     b->id = static_cast<id_t>(bodies.size());
     bodies.push_back(b);
+    ++changes;
     return b->id;
 }
 
@@ -16,6 +17,7 @@ void BodyContainer::erase(id_t id) {
     if (!exists(id)) throw std::out_of_range("Body #" + std::to_string(id) + " does not exist.");
     bodies[id]->id = -1;
     bodies[id].reset();
+    ++changes;
 }
 
 } // namespace yade

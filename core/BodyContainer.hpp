@@ -14,7 +14,12 @@ public:
     const std::shared_ptr<Body>& operator[](id_t id) const { return bodies[id]; }
     size_t size() const { return bodies.size(); } // including holes left by erase
     void erase(id_t id);                          // the scene removes the body's interactions first
-    void clear() { bodies.clear(); }
+    void clear() {
+        bodies.clear();
+        ++changes;
+    }
+    // Incremented by every insert, erase and clear (colliders rebuild their lists when it changes).
+    long long changes = 0;
     auto begin() const { return bodies.begin(); }
     auto end() const { return bodies.end(); }
 

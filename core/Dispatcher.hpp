@@ -57,6 +57,13 @@ public:
         bool resolved = false;
     };
     void invalidate() { table.clear(); }
+    bool isFilled() const { return !table.empty(); }
+    // Resolves every pair at once, so that get() only reads (safe from several threads).
+    void fill(const std::vector<std::shared_ptr<F>>& functors, const std::string& family1, const std::string& family2, bool symmetric) {
+        table.clear();
+        for (int i = 0; i < ClassRegistry::instance().familySize(family1); ++i)
+            for (int j = 0; j < ClassRegistry::instance().familySize(family2); ++j) get(i, j, functors, family1, family2, symmetric);
+    }
     const Entry& get(int i1, int i2, const std::vector<std::shared_ptr<F>>& functors, const std::string& family1,
             const std::string& family2, bool symmetric) {
         static const Entry noneEntry{nullptr, false, true};

@@ -36,6 +36,12 @@ public:
     }
     std::vector<std::shared_ptr<Functor>> functorsBase() const override { return {functors.begin(), functors.end()}; }
     void postLoad() override { table.invalidate(); }
+    // Resolves all type pairs now (before a parallel loop reads the table); true if it had to.
+    bool prepareTable() {
+        if (table.isFilled()) return false;
+        table.fill(functors, "Shape", "Shape", true);
+        return true;
+    }
     const DispatchTable2D<IGeomFunctor>::Entry& getFunctor(const Shape& a, const Shape& b) {
         return table.get(a.getClassIndex(), b.getClassIndex(), functors, "Shape", "Shape", true);
     }

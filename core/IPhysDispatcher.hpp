@@ -28,6 +28,12 @@ public:
     }
     std::vector<std::shared_ptr<Functor>> functorsBase() const override { return {functors.begin(), functors.end()}; }
     void postLoad() override { table.invalidate(); }
+    // Resolves all type pairs now (before a parallel loop reads the table); true if it had to.
+    bool prepareTable() {
+        if (table.isFilled()) return false;
+        table.fill(functors, "Material", "Material", true);
+        return true;
+    }
     const DispatchTable2D<IPhysFunctor>::Entry& getFunctor(const Material& a, const Material& b) {
         return table.get(a.getClassIndex(), b.getClassIndex(), functors, "Material", "Material", true);
     }

@@ -6,10 +6,6 @@
 
 namespace yade {
 
-class IGeomFunctor;
-class IPhysFunctor;
-class LawFunctor;
-
 class Interaction : public Serializable {
 public:
     Body::id_t id1 = -1, id2 = -1;
@@ -18,11 +14,6 @@ public:
     Vector3i cellDist = Vector3i::Zero();
     std::shared_ptr<IGeom> geom;
     std::shared_ptr<IPhys> phys;
-    // Functors chosen for this pair, cached by the dispatchers; reset when a body changes type.
-    IGeomFunctor* geomFunctor = nullptr;
-    IPhysFunctor* physFunctor = nullptr;
-    LawFunctor* lawFunctor = nullptr;
-    bool geomSwapped = false; // the Ig2 functor handles (shape2, shape1): ids were swapped
     size_t linIndex = 0;      // position in InteractionContainer
     template <class V> void visit(V& v) {
         Serializable::visit(v);
@@ -41,9 +32,6 @@ public:
         geom.reset();
         phys.reset();
         iterMadeReal = -1;
-        geomFunctor = nullptr;
-        physFunctor = nullptr;
-        lawFunctor = nullptr;
     }
     void swapOrder() { std::swap(id1, id2); cellDist = -cellDist; }
 };

@@ -29,6 +29,12 @@ public:
     }
     std::vector<std::shared_ptr<Functor>> functorsBase() const override { return {functors.begin(), functors.end()}; }
     void postLoad() override { table.invalidate(); }
+    // Resolves all type pairs now (before a parallel loop reads the table); true if it had to.
+    bool prepareTable() {
+        if (table.isFilled()) return false;
+        table.fill(functors, "IGeom", "IPhys", false);
+        return true;
+    }
     const DispatchTable2D<LawFunctor>::Entry& getFunctor(const IGeom& g, const IPhys& p) {
         return table.get(g.getClassIndex(), p.getClassIndex(), functors, "IGeom", "IPhys", false);
     }

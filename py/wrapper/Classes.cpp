@@ -133,6 +133,18 @@ static void bindExtras(py::module_& m) {
     ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<BoundDispatcher&>(s), a[0], "BoundDispatcher"); };
     ctorArgHandlers()["IGeomDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IGeomDispatcher&>(s), a[0], "IGeomDispatcher"); };
     ctorArgHandlers()["IPhysDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IPhysDispatcher&>(s), a[0], "IPhysDispatcher"); };
+    ctorArgHandlers()["Collider"] = [](Serializable& s, py::args a) {
+        if (a.size() != 1) throw py::type_error("InsertionSortCollider takes one positional argument: the list of Bo1 functors");
+        setFunctors(*static_cast<Collider&>(s).boundDispatcher, a[0], "Bo1 functors");
+    };
+    ctorArgHandlers()["InteractionLoop"] = [](Serializable& s, py::args a) {
+        if (a.size() != 3) throw py::type_error("InteractionLoop takes three lists: [Ig2 functors], [Ip2 functors], [Law2 functors]");
+        auto& loop = static_cast<InteractionLoop&>(s);
+        setFunctors(*loop.geomDispatcher, a[0], "InteractionLoop, first list (Ig2 functors)");
+        setFunctors(*loop.physDispatcher, a[1], "InteractionLoop, second list (Ip2 functors)");
+        setFunctors(*loop.lawDispatcher, a[2], "InteractionLoop, third list (Law2 functors)");
+        loop.checkFunctorChain();
+    };
     ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<LawDispatcher&>(s), a[0], "LawDispatcher"); };
 
     existing<BoundDispatcher, Dispatcher>()

@@ -235,7 +235,7 @@ namespace {
 		for (Eigen::Index k = 0; k < sizeOf<T>(); k++)
 			p[k] = static_cast<A>(flat(t, k));
 		if (!dtype.is_none()) return arr.attr("astype")(dtype);
-		return std::move(arr);
+		return py::object(std::move(arr));
 	}
 
 	// Parts shared by all dense types (vectors and Matrix3): constructors from scalars, arithmetic,

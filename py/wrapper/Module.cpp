@@ -2,7 +2,9 @@
 #include <pkg/RegisterClasses.hpp>
 #include <py/wrapper/Classes.hpp>
 #include <py/wrapper/Math.hpp>
+#include <lib/base/Logging.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
+#include <py/wrapper/ShopWrapper.hpp>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -13,6 +15,13 @@ PYBIND11_MODULE(_yade, m) {
     yade::registerMath(m);
     yade::bindAllClasses(m);
     yade::bindOmega(m);
+    yade::bindShop(m);
+    // Engine warnings become Python RuntimeWarnings (shown once per message by default).
+    yade::setWarningSink([](const std::string& msg) {
+        pybind11::gil_scoped_acquire gil;
+        auto warn = pybind11::module_::import("warnings").attr("warn");
+        warn(msg, pybind11::module_::import("builtins").attr("RuntimeWarning"));
+    });
     m.def("setNumThreads", [](int n) {
         if (n < 1) throw pybind11::value_error("number of threads must be >= 1");
 #ifdef _OPENMP

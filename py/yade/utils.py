@@ -2,9 +2,9 @@
 import math
 import random
 
-from ._yade import O, Body, Sphere, Aabb, State, FrictMat, Material, Vector3
+from ._yade import O, Body, Sphere, Aabb, State, FrictMat, Material, Vector3, PWaveTimeStep
 
-__all__ = ['sphere', 'defaultMaterial', 'randomColor']
+__all__ = ['sphere', 'defaultMaterial', 'randomColor', 'PWaveTimeStep']
 
 
 def defaultMaterial():

@@ -1,0 +1,129 @@
+#include <algorithm>
+#include <core/Scene.hpp>
+#include <pkg/common/InsertionSortCollider.hpp>
+#include <pkg/common/Sphere.hpp>
+
+namespace yade {
+
+bool InsertionSortCollider::needsRun() const {
+    const BodyContainer& bodies = scene->bodies;
+    if (bodies.changes != lastBodyChanges) return true;
+    const Real limit2 = sweep * sweep;
+    for (const auto& b : bodies) {
+        if (!b || !b->shape) continue;
+        if (!b->bound) continue; // bodies without a Bo1 functor take no part
+        if ((b->state->pos - b->bound->refPos).squaredNorm() > limit2) return true; // (3.1.6)
+    }
+    return false;
+}
+
+void InsertionSortCollider::updateBounds() {
+    Real minRadius = Inf;
+    for (const auto& b : scene->bodies)
+        if (b && b->shape)
+            if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
+    sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
+    boundDispatcher->scene = scene;
+    for (const auto& b : scene->bodies) {
+        if (!b || !b->shape) continue;
+        BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
+        if (!f) continue; // no Bo1 functor for this shape: the body takes no part in collisions
+        f->scene = scene;
+        f->go(*b->shape, b->bound, *b->state, *b);
+        b->bound->min -= Vector3r::Constant(sweep);
+        b->bound->max += Vector3r::Constant(sweep);
+        b->bound->refPos = b->state->pos;
+        b->bound->lastUpdateIter = scene->iter;
+    }
+}
+
+bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
+    const Bound &A = *a.bound, &B = *b.bound;
+    for (int i = 0; i < 3; ++i)
+        if (A.max[i] < B.min[i] || B.max[i] < A.min[i]) return false;
+    return true;
+}
+
+void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b) {
+    const auto& A = scene->bodies[a];
+    const auto& B = scene->bodies[b];
+    InteractionContainer& intrs = scene->interactions;
+    const bool overlap = Body::mayCollide(*A, *B) && boundsOverlap(*A, *B);
+    const auto& I = intrs.find(a, b);
+    if (overlap && !I) intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
+    else if (!overlap && I && !I->isReal()) intrs.erase(a, b);
+}
+
+// Insertion sort (3.1.3): each element moves left past the larger ones; passing a bound of the
+// opposite kind means the overlap along this axis began or ended.
+void InsertionSortCollider::insertionSort(std::vector<Bound1D>& list) {
+    for (size_t i = 1; i < list.size(); ++i) {
+        const Bound1D current = list[i];
+        size_t j = i;
+        while (j > 0 && current.coord < list[j - 1].coord) {
+            const Bound1D& passed = list[j - 1];
+            if (passed.isMin != current.isMin && passed.id != current.id) handleInversion(current.id, passed.id);
+            list[j] = list[j - 1];
+            --j;
+        }
+        list[j] = current;
+    }
+}
+
+void InsertionSortCollider::rebuild() {
+    ++numReinit;
+    const BodyContainer& bodies = scene->bodies;
+    for (auto& axis : axes) axis.clear();
+    for (const auto& b : bodies)
+        if (collidable(b))
+            for (int ax = 0; ax < 3; ++ax) {
+                axes[ax].push_back({b->bound->min[ax], b->id, true});
+                axes[ax].push_back({b->bound->max[ax], b->id, false});
+            }
+    for (auto& axis : axes)
+        std::sort(axis.begin(), axis.end(), [](const Bound1D& x, const Bound1D& y) { return x.coord < y.coord; });
+    InteractionContainer& intrs = scene->interactions;
+    // Drop potential interactions whose bounds are apart (or whose bodies lost their bounds).
+    std::vector<std::pair<Body::id_t, Body::id_t>> stale;
+    for (const auto& I : intrs) {
+        if (I->isReal()) continue;
+        const auto &A = bodies.exists(I->id1) ? bodies[I->id1] : nullptr, &B = bodies.exists(I->id2) ? bodies[I->id2] : nullptr;
+        if (!collidable(A) || !collidable(B) || !Body::mayCollide(*A, *B) || !boundsOverlap(*A, *B)) stale.emplace_back(I->id1, I->id2);
+    }
+    for (const auto& p : stale) intrs.erase(p.first, p.second);
+    // Sweep along x: every body whose lower bound lies inside [min, max] of another may overlap it.
+    const auto& xs = axes[0];
+    for (size_t i = 0; i < xs.size(); ++i) {
+        if (!xs[i].isMin) continue;
+        const Body::id_t a = xs[i].id;
+        for (size_t j = i + 1; j < xs.size() && !(xs[j].id == a && !xs[j].isMin); ++j) {
+            if (!xs[j].isMin) continue;
+            const Body::id_t b = xs[j].id;
+            if (Body::mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && !intrs.find(a, b))
+                intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
+        }
+    }
+}
+
+void InsertionSortCollider::action() {
+    if (!needsRun()) return;
+    ++numAction;
+    updateBounds();
+    const BodyContainer& bodies = scene->bodies;
+    size_t nCollidable = 0;
+    for (const auto& b : bodies) nCollidable += collidable(b);
+    if (bodies.changes != lastBodyChanges || 2 * nCollidable != axes[0].size()) {
+        rebuild();
+        lastBodyChanges = bodies.changes;
+        return;
+    }
+    for (int ax = 0; ax < 3; ++ax) {
+        for (auto& e : axes[ax]) {
+            const Bound& bb = *bodies[e.id]->bound;
+            e.coord = e.isMin ? bb.min[ax] : bb.max[ax];
+        }
+        insertionSort(axes[ax]);
+    }
+}
+
+} // namespace yade

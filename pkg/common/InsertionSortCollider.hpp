@@ -1,0 +1,42 @@
+// Sweep and prune with insertion sort on three axes (3.1.3). Bounds are enlarged by the
+// Verlet distance and the collider reruns only when a body has moved farther than that.
+#pragma once
+#include <pkg/common/Collider.hpp>
+
+namespace yade {
+
+class InsertionSortCollider : public Collider {
+public:
+    Real verletDist = -0.5;
+    long long numAction = 0, numReinit = 0;
+    template <class V> void visit(V& v) {
+        Collider::visit(v);
+        v.attr("verletDist", verletDist,
+                "Enlargement of the bounds (the Verlet distance ΔL of 3.1.3); negative: that fraction of the smallest sphere radius",
+                Attr::finite);
+        v.attr("numAction", numAction, "How many times the collider has run (not counting skipped steps)", Attr::readonly | Attr::noSave);
+        v.attr("numReinit", numReinit, "How many times the sorted lists were rebuilt from scratch", Attr::readonly | Attr::noSave);
+    }
+    void action() override;
+    Real sweepLength() const { return sweep; }
+
+private:
+    struct Bound1D {
+        Real coord;
+        Body::id_t id;
+        bool isMin;
+    };
+    std::vector<Bound1D> axes[3];
+    long long lastBodyChanges = -1;
+    Real sweep = 0;
+    bool needsRun() const;
+    void updateBounds();
+    void rebuild();
+    void insertionSort(std::vector<Bound1D>& list);
+    // The overlap of the bounds of a and b may have changed: create or drop their potential interaction.
+    void handleInversion(Body::id_t a, Body::id_t b);
+    bool boundsOverlap(const Body& a, const Body& b) const;
+    bool collidable(const std::shared_ptr<Body>& b) const { return b && b->shape && b->bound; }
+};
+
+} // namespace yade

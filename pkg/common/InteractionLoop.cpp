@@ -1,0 +1,97 @@
+#include <core/Scene.hpp>
+#include <lib/base/Logging.hpp>
+#include <pkg/common/InteractionLoop.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+void InteractionLoop::checkFunctorChain() const {
+    auto& reg = ClassRegistry::instance();
+    auto accepts = [&](const std::string& geom, const std::string& phys) {
+        for (const auto& law : lawDispatcher->functors) {
+            const auto t = law->argTypes();
+            if (reg.isSubclass(geom, t.at(0)) && (phys.empty() || reg.isSubclass(phys, t.at(1)))) return true;
+        }
+        return false;
+    };
+    std::string laws;
+    for (const auto& law : lawDispatcher->functors) laws += (laws.empty() ? "" : ", ") + law->getClassName();
+    if (laws.empty()) laws = "none";
+    for (const auto& ig2 : geomDispatcher->functors) {
+        const std::string g = ig2->producedType();
+        if (!accepts(g, ""))
+            throw std::invalid_argument(ig2->getClassName() + " produces " + g + ", but no Law2 functor accepts " + g
+                    + " (Law2 functors given: " + laws + "); add e.g. a Law2_" + g + "_..._... functor");
+        for (const auto& ip2 : physDispatcher->functors) {
+            const std::string p = ip2->producedType();
+            if (!accepts(g, p))
+                throw std::invalid_argument(ig2->getClassName() + " produces " + g + " and " + ip2->getClassName() + " produces "
+                        + p + ", but no Law2 functor accepts the pair (" + g + ", " + p + ") (Law2 functors given: " + laws + ")");
+        }
+    }
+}
+
+void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
+    const auto key = std::minmax(a.getClassIndex(), b.getClassIndex());
+    if (!warnedShapePairs.insert(key).second) return;
+    logWarning("InteractionLoop: no Ig2 functor for " + a.getClassName() + "+" + b.getClassName()
+            + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
+}
+
+void InteractionLoop::action() {
+    Scene& s = *scene;
+    const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
+    if (changed) checkFunctorChain();
+    for (auto* d : std::initializer_list<Dispatcher*>{geomDispatcher.get(), physDispatcher.get(), lawDispatcher.get()})
+        for (const auto& f : d->functorsBase()) f->scene = &s;
+
+    const BodyContainer& bodies = s.bodies;
+    const long n = (long)s.interactions.size();
+    std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
+    std::string error;
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < n; ++k) {
+        Interaction& I = *s.interactions[(size_t)k];
+        const Body* b1 = bodies[I.id1].get();
+        const Body* b2 = bodies[I.id2].get();
+        if (!b1 || !b2 || !b1->shape || !b2->shape) continue;
+        const auto& geomEntry = geomDispatcher->getFunctor(*b1->shape, *b2->shape);
+        if (!geomEntry.functor) {
+#pragma omp critical(yadeMissing)
+            missingIg2.emplace_back(b1->shape.get(), b2->shape.get());
+            continue;
+        }
+        if (geomEntry.swap) { // the functor takes the shapes in the other order
+            I.swapOrder();
+            std::swap(b1, b2);
+        }
+        const bool wasReal = I.isReal();
+        if (!geomEntry.functor->go(*b1->shape, *b2->shape, *b1->state, *b2->state, Vector3r::Zero(), false, I)) {
+            if (wasReal) I.reset(); // the geometry says the contact is over
+            continue;
+        }
+        if (!I.phys) {
+            if (!b1->material || !b2->material) continue;
+            const auto& physEntry = physDispatcher->getFunctor(*b1->material, *b2->material);
+            if (!physEntry.functor) {
+#pragma omp critical(yadeError)
+                error = "no Ip2 functor for " + b1->material->getClassName() + "+" + b2->material->getClassName()
+                        + " (bodies #" + std::to_string(I.id1) + " and #" + std::to_string(I.id2) + ")";
+                continue;
+            }
+            physEntry.functor->go(b1->material, b2->material, I);
+            I.iterMadeReal = s.iter;
+        }
+        const auto& lawEntry = lawDispatcher->getFunctor(*I.geom, *I.phys);
+        if (!lawEntry.functor) {
+#pragma omp critical(yadeError)
+            error = "no Law2 functor for " + I.geom->getClassName() + "+" + I.phys->getClassName();
+            continue;
+        }
+        if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
+    }
+    for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
+    if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);
+}
+
+} // namespace yade

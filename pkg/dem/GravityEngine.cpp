@@ -1,0 +1,17 @@
+#include <core/Scene.hpp>
+#include <pkg/dem/GravityEngine.hpp>
+
+namespace yade {
+
+void GravityEngine::action() {
+    Scene& s = *scene;
+    const long n = (long)s.bodies.size();
+#pragma omp parallel for schedule(static)
+    for (long id = 0; id < n; ++id) {
+        const auto& b = s.bodies[(Body::id_t)id];
+        if (!b || !b->isDynamic() || (mask != -1 && !(b->mask & mask))) continue;
+        s.forces.addForce((int)id, gravity * b->state->mass);
+    }
+}
+
+} // namespace yade

@@ -1,0 +1,19 @@
+// Adds the weight m·g to every dynamic body (an alternative to NewtonIntegrator.gravity).
+#pragma once
+#include <core/Engine.hpp>
+
+namespace yade {
+
+class GravityEngine : public GlobalEngine {
+public:
+    Vector3r gravity = Vector3r::Zero();
+    int mask = -1;
+    template <class V> void visit(V& v) {
+        GlobalEngine::visit(v);
+        v.attr("gravity", gravity, "Gravitational acceleration [m/s²]", Attr::finite);
+        v.attr("mask", mask, "Applies only to bodies with (body.mask & mask) != 0 (-1: all)");
+    }
+    void action() override;
+};
+
+} // namespace yade

@@ -1,0 +1,27 @@
+#include <core/Scene.hpp>
+#include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
+
+namespace yade {
+
+bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const State& st1, const State& st2,
+        const Vector3r& shift2, bool force, Interaction& I) {
+    Vector3r normal = (st2.pos + shift2) - st1.pos;
+    const Real sumR = s1.radius + s2.radius;
+    if (!I.isReal() && !force) { // a potential contact: is it one yet?
+        const Real reach = interactionDetectionFactor * sumR;
+        if (normal.squaredNorm() > reach * reach) return false;
+    }
+    const bool isNew = !I.geom;
+    if (isNew) I.geom = std::make_shared<ScGeom>();
+    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    const Real dist = normal.norm();
+    normal /= dist;
+    g.penetrationDepth = sumR - dist;
+    g.contactPoint = st1.pos + (s1.radius - 0.5 * g.penetrationDepth) * normal;
+    g.refR1 = s1.radius;
+    g.refR2 = s2.radius;
+    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    return true;
+}
+
+} // namespace yade

@@ -1,0 +1,21 @@
+// Exact contact of two spheres (3.3.1): overlap, normal, contact point, then the shear update.
+#pragma once
+#include <core/IGeomDispatcher.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class Ig2_Sphere_Sphere_ScGeom : public IGeomFunctorOf<Sphere, Sphere, ScGeom> {
+public:
+    Real interactionDetectionFactor = 1;
+    template <class V> void visit(V& v) {
+        IGeomFunctor::visit(v);
+        v.attr("interactionDetectionFactor", interactionDetectionFactor,
+                "A contact starts when the distance is below this factor times r1+r2 (3.3.1)", Attr::positive);
+    }
+    bool go(const Sphere& s1, const Sphere& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
+            Interaction& I) override;
+};
+
+} // namespace yade

@@ -1,0 +1,26 @@
+#include <core/Scene.hpp>
+#include <pkg/dem/Law2_ScGeom_FrictPhys_CundallStrack.hpp>
+
+namespace yade {
+
+bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Interaction& I) {
+    if (geom.penetrationDepth < 0) { // the bodies separated
+        if (!neverErase) return false;
+        phys.normalForce = phys.shearForce = Vector3r::Zero();
+        return true;
+    }
+    phys.normalForce = phys.kn * geom.penetrationDepth * geom.normal;
+    Vector3r& shearForce = geom.rotate(phys.shearForce);
+    shearForce -= phys.ks * geom.shearInc; // trial shear force
+    const Real maxFs2 = phys.normalForce.squaredNorm() * phys.tangensOfFrictionAngle * phys.tangensOfFrictionAngle;
+    if (shearForce.squaredNorm() > maxFs2) shearForce *= std::sqrt(maxFs2) / shearForce.norm(); // sliding
+    const Vector3r force = -phys.normalForce - shearForce; // on body 1
+    ForceContainer& forces = scene->forces;
+    forces.addForce(I.id1, force);
+    forces.addForce(I.id2, -force);
+    forces.addTorque(I.id1, (geom.refR1 - 0.5 * geom.penetrationDepth) * geom.normal.cross(force));
+    forces.addTorque(I.id2, (geom.refR2 - 0.5 * geom.penetrationDepth) * geom.normal.cross(force));
+    return true;
+}
+
+} // namespace yade

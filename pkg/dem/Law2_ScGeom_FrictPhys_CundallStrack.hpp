@@ -1,0 +1,20 @@
+// The Cundall-Strack contact law (3.4): linear normal spring, incremental shear spring with
+// Mohr-Coulomb sliding; forces and torques applied at the contact point.
+#pragma once
+#include <core/LawDispatcher.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class Law2_ScGeom_FrictPhys_CundallStrack : public LawFunctorOf<ScGeom, FrictPhys> {
+public:
+    bool neverErase = false;
+    template <class V> void visit(V& v) {
+        LawFunctor::visit(v);
+        v.attr("neverErase", neverErase, "Keep contacts whose bodies separated (forces zeroed) instead of removing them");
+    }
+    bool go(ScGeom& geom, FrictPhys& phys, Interaction& I) override;
+};
+
+} // namespace yade

@@ -1,0 +1,31 @@
+// Integrates the motion of every body from its forces (3.5): leapfrog for positions (3.5.1),
+// spherical orientation update (3.5.2), adapted Cundall damping (3.5.12).
+#pragma once
+#include <core/Engine.hpp>
+#include <core/State.hpp>
+
+namespace yade {
+
+class NewtonIntegrator : public GlobalEngine {
+public:
+    Real damping = 0.2;
+    Vector3r gravity = Vector3r::Zero();
+    bool dampGravity = true;
+    Real maxVelocitySq = NaN;
+    int mask = -1;
+    template <class V> void visit(V& v) {
+        GlobalEngine::visit(v);
+        v.attr("damping", damping, "Numerical damping coefficient λd of (3.5.12), in [0,1)", Attr::nonNegative);
+        v.attr("gravity", gravity, "Gravitational acceleration applied to dynamic bodies [m/s²]", Attr::finite);
+        v.attr("dampGravity", dampGravity, "Damp the gravity force too (gravity is added before damping)");
+        v.attr("maxVelocitySq", maxVelocitySq, "Largest squared velocity in the last step [m²/s²]", Attr::readonly | Attr::noSave);
+        v.attr("mask", mask, "Gravity is applied only to bodies with (body.mask & mask) != 0 (-1: all)");
+    }
+    void action() override;
+
+private:
+    void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const;
+    void dampRotation(Vector3r& angAccel, const Vector3r& angVel) const;
+};
+
+} // namespace yade
