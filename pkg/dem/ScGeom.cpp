@@ -11,10 +11,12 @@ void ScGeom::precompute(const State& s1, const State& s2, Real dt, const Vector3
         twistAxis = (dt * 0.5 * normal.dot(s1.angVel + s2.angVel)) * normal; // twist
     }
     normal = currentNormal;
-    // Relative velocity at the contact point with constant lever arms refR1, refR2 (no
-    // dependence on the overlap, which avoids granular ratcheting).
+    // Relative velocity of the contact points as if the spheres kept their reference radii
+    // (avoids granular ratcheting): the lever arms are refR1, refR2 and the translational part
+    // is scaled by (r1+r2)/distance accordingly.
     const Vector3r c1x = refR1 * normal, c2x = -refR2 * normal;
-    Vector3r relVel = (s2.vel + shiftVel + s2.angVel.cross(c2x)) - (s1.vel + s1.angVel.cross(c1x));
+    const Real alpha = (refR1 + refR2) / (refR1 + refR2 - penetrationDepth);
+    Vector3r relVel = (s2.vel + shiftVel - s1.vel) * alpha + s2.angVel.cross(c2x) - s1.angVel.cross(c1x);
     relVel -= normal.dot(relVel) * normal; // shear part only
     shearInc = relVel * dt;
 }

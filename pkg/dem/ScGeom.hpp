@@ -36,8 +36,8 @@ public:
         v.attr("orthonormalAxis", orthonormalAxis, "Tilt of the contact plane in the last step", Attr::hidden);
         v.attr("twistAxis", twistAxis, "Twist of the contact plane in the last step", Attr::hidden);
     }
-    // Updates normal, the plane rotation and shearInc for the current step (3.3.2). `radius1/2`
-    // are the lever arms used for the relative velocity at the contact point.
+    // Updates normal, the plane rotation and shearInc for the current step (3.3.2); refR1,
+    // refR2 and penetrationDepth must be set before.
     void precompute(const State& s1, const State& s2, Real dt, const Vector3r& currentNormal, bool isNew,
             const Vector3r& shiftVel);
     // Rotates a shear vector (force or displacement) with the contact plane: (3.3.2) step 1.

@@ -1,0 +1,7 @@
+#!/bin/bash
+# Regenerates data/*.txt with the reference Yade (apt-get install -y yade).
+set -euo pipefail
+cd "$(dirname "$0")"
+for s in bouncing_sphere oblique_impact; do
+    yade -n -x -j1 "$s.py" 2>/dev/null | grep -E '^[0-9]+ [0-9]+ ' > "data/$s.txt"
+done
