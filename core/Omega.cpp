@@ -22,7 +22,10 @@ void Omega::loop() {
     try {
         while (!stopRequested) {
             s.moveToNextTimeStep();
-            if (s.iter == s.stopAtIter) break;
+            if (s.iter == s.stopAtIter) {
+                s.stopAtIter = -1; // reached: a later O.run() runs until paused
+                break;
+            }
         }
     } catch (...) {
         error = std::current_exception();
@@ -69,8 +72,8 @@ void Omega::step() {
 }
 
 void Omega::reset() {
-    requireStopped("O.reset()");
-    joinLoop();
+    if (inLoopThread()) throw std::runtime_error("O.reset() cannot be called from inside the simulation loop");
+    pause();
     scenes[current] = std::make_shared<Scene>();
 }
 

@@ -27,9 +27,6 @@ public:
     PeriodicEngine();
     bool isActivated() override;
     static Real wallClock();
-
-private:
-    bool reachedOnce = false;
 };
 
 } // namespace yade

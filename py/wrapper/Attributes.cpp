@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <py/wrapper/Attributes.hpp>
 #include <pybind11/stl.h>
 
@@ -115,10 +116,14 @@ void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
                 throw py::type_error(where + ": expected bool, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
             *static_cast<bool*>(p) = py::isinstance<py::bool_>(v) ? py::cast<bool>(v) : py::cast<long long>(v) != 0;
             break;
-        case AttrKind::Int:
+        case AttrKind::Int: {
             if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");
-            *static_cast<int*>(p) = castOr<int>(v, where, expected);
+            const long long x = castOr<long long>(v, where, expected);
+            if (x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
+                throw py::value_error(where + ": " + std::to_string(x) + " is out of the range of a 32-bit int");
+            *static_cast<int*>(p) = (int)x;
             break;
+        }
         case AttrKind::Long:
             if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");
             *static_cast<long long*>(p) = castOr<long long>(v, where, expected);

@@ -86,6 +86,11 @@ template <class D> static void setFunctors(D& d, py::handle list, const char* wh
     }
 }
 
+template <class D> static void setFunctorsFromArgs(D& d, py::args a, const char* what) {
+    if (a.size() != 1) throw py::value_error(std::string(what) + " takes exactly one list of functors as positional argument");
+    setFunctors(d, a[0], what);
+}
+
 // The Python class already bound for T, to add hand-written members to it.
 template <class T, class Base> static py::class_<T, Base, std::shared_ptr<T>> existing() {
     return py::reinterpret_borrow<py::class_<T, Base, std::shared_ptr<T>>>(py::type::handle_of<T>());
@@ -130,9 +135,9 @@ static void bindExtras(py::module_& m) {
     existing<Interaction, Serializable>()
             .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)");
 
-    ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<BoundDispatcher&>(s), a[0], "BoundDispatcher"); };
-    ctorArgHandlers()["IGeomDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IGeomDispatcher&>(s), a[0], "IGeomDispatcher"); };
-    ctorArgHandlers()["IPhysDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<IPhysDispatcher&>(s), a[0], "IPhysDispatcher"); };
+    ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<BoundDispatcher&>(s), a, "BoundDispatcher"); };
+    ctorArgHandlers()["IGeomDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<IGeomDispatcher&>(s), a, "IGeomDispatcher"); };
+    ctorArgHandlers()["IPhysDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<IPhysDispatcher&>(s), a, "IPhysDispatcher"); };
     ctorArgHandlers()["Collider"] = [](Serializable& s, py::args a) {
         if (a.size() != 1) throw py::type_error("InsertionSortCollider takes one positional argument: the list of Bo1 functors");
         setFunctors(*static_cast<Collider&>(s).boundDispatcher, a[0], "Bo1 functors");
@@ -145,7 +150,7 @@ static void bindExtras(py::module_& m) {
         setFunctors(*loop.lawDispatcher, a[2], "InteractionLoop, third list (Law2 functors)");
         loop.checkFunctorChain();
     };
-    ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctors(static_cast<LawDispatcher&>(s), a[0], "LawDispatcher"); };
+    ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<LawDispatcher&>(s), a, "LawDispatcher"); };
 
     existing<BoundDispatcher, Dispatcher>()
             .def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) -> py::object {

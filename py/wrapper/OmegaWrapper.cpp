@@ -84,7 +84,10 @@ struct BodyContainerProxy {
         return py::iter(l);
     }
     bool erase(long id) {
-        scene().eraseBody((Body::id_t)id);
+        Scene& s = scene();
+        if (id < 0 || id >= (long)s.bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
+        if (!s.bodies.exists((Body::id_t)id)) return false; // already erased
+        s.eraseBody((Body::id_t)id);
         return true;
     }
     void clear() {

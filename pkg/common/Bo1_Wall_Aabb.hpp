@@ -1,0 +1,15 @@
+// Aabb of a wall: infinite along the two axes of its plane.
+#pragma once
+#include <core/BoundDispatcher.hpp>
+#include <pkg/common/Aabb.hpp>
+#include <pkg/common/Wall.hpp>
+
+namespace yade {
+
+class Bo1_Wall_Aabb : public BoundFunctorOf<Wall, Aabb> {
+public:
+    template <class V> void visit(V& v) { BoundFunctor::visit(v); }
+    void go(const Wall& w, Aabb& aabb, const State& state, const Body& body) override;
+};
+
+} // namespace yade

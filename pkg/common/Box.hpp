@@ -1,0 +1,17 @@
+// A cuboid of half-sizes `extents`, centered at the body position, turned by its orientation.
+#pragma once
+#include <core/Shape.hpp>
+
+namespace yade {
+
+class Box : public Shape {
+public:
+    Vector3r extents = Vector3r::Constant(NaN);
+    template <class V> void visit(V& v) {
+        Shape::visit(v);
+        v.attr("extents", extents, "Half-sizes along the local axes [m]", Attr::positive);
+    }
+    YADE_INDEXABLE(Box)
+};
+
+} // namespace yade

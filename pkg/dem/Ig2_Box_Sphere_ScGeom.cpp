@@ -1,0 +1,44 @@
+#include <core/Scene.hpp>
+#include <pkg/dem/Ig2_Box_Sphere_ScGeom.hpp>
+
+namespace yade {
+
+bool Ig2_Box_Sphere_ScGeom::go(const Box& b, const Sphere& s, const State& st1, const State& st2,
+        const Vector3r& shift2, bool force, Interaction& I) {
+    const Real r = s.radius;
+    const Vector3r center = st2.pos + shift2;
+    const Vector3r local = st1.ori.conjugate() * (center - st1.pos); // sphere center in the box frame
+    const Vector3r& l = b.extents;
+    Vector3r closest = local.cwiseMax(-l).cwiseMin(l); // closest point of the box volume
+    const bool inside = closest == local;
+    Vector3r normal; // from the box towards the sphere, global
+    Real penetrationDepth;
+    if (inside) { // the center is inside: push out through the nearest face
+        int ax = 0;
+        Real gap = l[0] - std::abs(local[0]);
+        for (int i = 1; i < 3; ++i)
+            if (l[i] - std::abs(local[i]) < gap) {
+                gap = l[i] - std::abs(local[i]);
+                ax = i;
+            }
+        Vector3r n = Vector3r::Zero();
+        n[ax] = local[ax] >= 0 ? 1 : -1;
+        normal = st1.ori * n;
+        penetrationDepth = r + gap;
+    } else {
+        normal = center - (st1.pos + st1.ori * closest);
+        penetrationDepth = r - normal.norm();
+        if (penetrationDepth <= 0 && !I.isReal() && !force) return false;
+        normal.normalize();
+    }
+    const bool isNew = !I.geom;
+    if (isNew) I.geom = std::make_shared<ScGeom>();
+    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    g.contactPoint = center - (r - 0.5 * penetrationDepth) * normal;
+    g.penetrationDepth = penetrationDepth;
+    g.refR1 = g.refR2 = r;
+    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    return true;
+}
+
+} // namespace yade

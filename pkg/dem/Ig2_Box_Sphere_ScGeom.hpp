@@ -1,0 +1,17 @@
+// Contact of a box and a sphere: with the closest point of the box surface.
+#pragma once
+#include <core/IGeomDispatcher.hpp>
+#include <pkg/common/Box.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class Ig2_Box_Sphere_ScGeom : public IGeomFunctorOf<Box, Sphere, ScGeom> {
+public:
+    template <class V> void visit(V& v) { IGeomFunctor::visit(v); }
+    bool go(const Box& b, const Sphere& s, const State& st1, const State& st2, const Vector3r& shift2, bool force,
+            Interaction& I) override;
+};
+
+} // namespace yade

@@ -1,0 +1,21 @@
+// Contact of a facet and a sphere: with the face, an edge or a vertex.
+#pragma once
+#include <core/IGeomDispatcher.hpp>
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class Ig2_Facet_Sphere_ScGeom : public IGeomFunctorOf<Facet, Sphere, ScGeom> {
+public:
+    Real shrinkFactor = 0;
+    template <class V> void visit(V& v) {
+        IGeomFunctor::visit(v);
+        v.attr("shrinkFactor", shrinkFactor, "Shrink the facet's edges inwards by this fraction of the sphere radius", Attr::nonNegative);
+    }
+    bool go(const Facet& f, const Sphere& s, const State& st1, const State& st2, const Vector3r& shift2, bool force,
+            Interaction& I) override;
+};
+
+} // namespace yade

@@ -1,0 +1,17 @@
+// Contact of an infinite axis-aligned wall and a sphere.
+#pragma once
+#include <core/IGeomDispatcher.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class Ig2_Wall_Sphere_ScGeom : public IGeomFunctorOf<Wall, Sphere, ScGeom> {
+public:
+    template <class V> void visit(V& v) { IGeomFunctor::visit(v); }
+    bool go(const Wall& w, const Sphere& s, const State& st1, const State& st2, const Vector3r& shift2, bool force,
+            Interaction& I) override;
+};
+
+} // namespace yade

@@ -1,0 +1,215 @@
+"""Parameters of a (batch) simulation, as in Yade.
+
+A script declares its parameters with their default values::
+
+    readParamsFromTable(damping=.2, nSpheres=100)
+    from yade.params import table
+    NewtonIntegrator(damping=table.damping)
+
+When the script runs in a batch (``yade-batch``, which sets the ``YADE_BATCH``
+environment variable to ``tableFile:lineNumber`` for each child), the values in
+that line of the parameter table override the defaults; otherwise the defaults
+are used. The values are put in the module ``yade.params.table`` (created anew by
+each call of :func:`readParamsFromTable`); they are not made global variables.
+
+Format of the parameter table (a text file)::
+
+    # comments (from '#' to the end of the line) and blank lines are allowed anywhere
+    damping  nSpheres  description   # first non-blank line: column names
+    .2       100       lowDamping    # each following line: one simulation
+    .4       =         highDamping   # '=' repeats the value of the line above
+
+Values are Python expressions (evaluated with the names of the :mod:`math` module
+available); the optional ``description`` column is taken as text and names the
+run (it is synthesized from the assigned parameters when absent).
+"""
+import math
+import os
+import pickle
+import sys
+import types
+import warnings
+
+__all__ = ['readParamsFromTable', 'waitIfBatch', 'inBatch', 'batchTableLine']
+
+_BATCH_ENV = 'YADE_BATCH'
+_tableMade = False
+
+
+def batchTableLine():
+    """The ``tableFile:lineNumber`` of this run when it is part of a batch, else None."""
+    return os.environ.get(_BATCH_ENV) or None
+
+
+def inBatch():
+    """Whether this run is part of a batch (the ``YADE_BATCH`` environment variable is set)."""
+    return batchTableLine() is not None
+
+
+def _omega():
+    from ._yade import O
+    return O
+
+
+def _stripComment(line):
+    i = line.find('#')
+    return line if i < 0 else line[:i]
+
+
+def _parseTable(fileName, lineNo):
+    """Return (column names, list of expression strings) for line lineNo (1-based) of the table file.
+
+    '=' values are replaced by the value of the same column in the previous data line."""
+    with open(fileName) as f:
+        lines = f.read().splitlines()
+    headers = None
+    prev = None
+    for i, raw in enumerate(lines, start=1):
+        words = _stripComment(raw).split()
+        if not words:
+            if i == lineNo:
+                break
+            continue
+        if headers is None:
+            headers = words
+            if i == lineNo:
+                break
+            continue
+        if len(words) != len(headers):
+            if i == lineNo:
+                raise ValueError('Table %s, line %d: %d values for %d columns (%s)'
+                                 % (fileName, i, len(words), len(headers), ' '.join(headers)))
+            prev = None  # a malformed line cannot be repeated with '='
+            continue
+        vals = []
+        for j, w in enumerate(words):
+            if w == '=':
+                if prev is None:
+                    if i == lineNo:
+                        raise ValueError("Table %s, line %d: '=' in column %s has no value above to repeat"
+                                         % (fileName, i, headers[j]))
+                    w = None
+                else:
+                    w = prev[j]
+            vals.append(w)
+        prev = vals
+        if i == lineNo:
+            return headers, vals
+    raise RuntimeError("Table %s doesn't contain valid line number %d" % (fileName, lineNo))
+
+
+def _evalNamespace():
+    ns = {'__builtins__': __builtins__}
+    ns.update((k, getattr(math, k)) for k in dir(math) if not k.startswith('_'))
+    ns['math'] = math
+    return ns
+
+
+def _setTag(O, key, value):
+    try:
+        O.tags[key] = value
+    except Exception:
+        pass
+
+
+def _makeTableModule(values):
+    """Create yade.params.table (a new module) holding values (a dict, in order)."""
+    global _tableMade
+    name = __name__ + '.table'
+    if _tableMade:
+        warnings.warn('Overwriting %s which already exists.' % name)
+    mod = types.ModuleType(name)
+    mod.__doc__ = 'Parameters of this simulation, set by readParamsFromTable.'
+    for k, v in values.items():
+        setattr(mod, k, v)
+    mod.__all__ = list(values.keys())
+    sys.modules[name] = mod
+    globals()['table'] = mod
+    _tableMade = True
+    return mod
+
+
+def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **kw):
+    """Read simulation parameters; keyword arguments are the parameters and their default values.
+
+    The parameters are put in the module ``yade.params.table`` (``from yade.params import table``,
+    then ``table.name``). Outside a batch the defaults are used; in a batch (``YADE_BATCH`` set to
+    ``tableFile:lineNumber`` by ``yade-batch``), or when *tableFileLine* is given, the values of that
+    line of the parameter table (line numbers as seen in a text editor) replace the defaults.
+
+    Tags set in ``O.tags``: ``line`` ('l' + the line number, 'l!' outside a batch), ``params``
+    ("name1=expr1,name2=expr2" for the parameters read from the table), ``defaultParams``
+    ("name=value,..." for the parameters left at their defaults), and in a batch also
+    ``description`` (the description column, or synthesized from ``params``),
+    ``d.id`` (description + '.' + id) and ``id.d`` (id + '.' + description).
+
+    :param tableFileLine: 'file:line' to read instead of the ``YADE_BATCH`` environment variable.
+    :param noTableOk: if False, raise an error when no table is given (not in a batch).
+    :param unknownOk: accept (and assign) table columns that have no default value here;
+        otherwise such a column raises NameError.
+    :return: the number of parameters assigned from the table (0 outside a batch).
+    """
+    O = _omega()
+    if tableFileLine is None:
+        tableFileLine = batchTableLine()
+    values = {}
+    nRead = 0
+    if tableFileLine is None:
+        if not noTableOk:
+            raise EnvironmentError('%s is not defined in the environment' % _BATCH_ENV)
+        _setTag(O, 'line', 'l!')
+        _setTag(O, 'params', '')
+    else:
+        fileName, sep, lineStr = str(tableFileLine).rpartition(':')
+        if not sep or not fileName:
+            raise ValueError("tableFileLine must be 'file:lineNumber', got %r" % tableFileLine)
+        try:
+            lineNo = int(lineStr)
+        except ValueError:
+            raise ValueError("tableFileLine must be 'file:lineNumber', got %r" % tableFileLine)
+        headers, exprs = _parseTable(fileName, lineNo)
+        description = None
+        assigned = []
+        for name, expr in zip(headers, exprs):
+            if name == 'description':
+                description = expr
+                continue
+            if name not in kw and not unknownOk:
+                raise NameError("Parameter `%s' has no default value assigned" % name)
+            if expr is None:
+                raise ValueError("Table %s, line %d: '=' in column %s has no value above to repeat"
+                                 % (fileName, lineNo, name))
+            assigned.append((name, expr))
+        ns = _evalNamespace()
+        for name, expr in assigned:
+            try:
+                values[name] = eval(expr, ns)
+            except Exception as e:
+                if hasattr(e, 'add_note'):
+                    e.add_note('while evaluating parameter %s=%s (table %s, line %d)' % (name, expr, fileName, lineNo))
+                raise
+        nRead = len(assigned)
+        params = ','.join('%s=%s' % (n, e) for n, e in assigned)
+        if description is None:
+            description = params.replace("'", '').replace('"', '')
+        _setTag(O, 'line', 'l%d' % lineNo)
+        _setTag(O, 'description', description)
+        _setTag(O, 'params', params)
+        oid = O.tags['id']
+        _setTag(O, 'd.id', description + '.' + oid)
+        _setTag(O, 'id.d', oid + '.' + description)
+    defaults = [(k, v) for k, v in kw.items() if k not in values]
+    _setTag(O, 'defaultParams', ','.join('%s=%s' % (k, v) for k, v in defaults))
+    values.update(defaults)
+    try:
+        _setTag(O, 'pickledPythonVariablesDictionarytable', pickle.dumps(dict(values), protocol=0).decode('latin-1'))
+    except Exception:
+        pass
+    _makeTableModule(values)
+    return nRead
+
+
+def waitIfBatch():
+    """In a batch, block until the simulation stops (``O.wait()``); return at once otherwise."""
+    if inBatch():
+        _omega().wait()
