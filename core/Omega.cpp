@@ -1,4 +1,5 @@
 #include <core/Omega.hpp>
+#include <cstdio>
 #include <stdexcept>
 
 namespace yade {
@@ -29,6 +30,7 @@ void Omega::loop() {
         }
     } catch (...) {
         error = std::current_exception();
+        std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
     }
     running = false;
 }

@@ -13,7 +13,8 @@ import pytest
 
 from yade import (O, Bo1_Sphere_Aabb, ElastMat, ForceResetter, FrictMat, GravityEngine, Ig2_Sphere_Sphere_ScGeom,
                   InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys,
-                  Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, Quaternion, Shape, Vector3)
+                  Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, Quaternion, Shape, Vector3,
+                  setNumThreads)
 from yade.utils import PWaveTimeStep, sphere
 
 G = 9.81
@@ -46,7 +47,7 @@ def mat(young=1e7, poisson=0.3, frictionAngle=0.5, density=2600, label=''):
 
 
 def kn_formula(E1, r1, E2, r2):
-    """Normal stiffness of two spheres (3.2.4): Kn = 2·E1·r1·E2·r2 / (E1·r1 + E2·r2)."""
+    """Normal stiffness of two spheres (manual 3.2): Kn = 2·E1·r1·E2·r2 / (E1·r1 + E2·r2)."""
     return 2 * E1 * r1 * E2 * r2 / (E1 * r1 + E2 * r2)
 
 
@@ -140,7 +141,7 @@ def test_head_on_elastic_impact(dtFactor):
     e0 = kinetic_energy([0, 1])
     vRelIn = (b2.vel - b1.vel)[0]
     nSteps = run_until_separated()
-    # contact duration of a linear spring (3.4): half a period of the reduced mass m* on Kn
+    # contact duration of a linear spring: half a period of the reduced mass m* on Kn
     kn = kn_formula(m.young, r, m.young, r)
     mStar = mass * mass / (mass + mass)
     T = math.pi * math.sqrt(mStar / kn)
@@ -150,7 +151,7 @@ def test_head_on_elastic_impact(dtFactor):
     assert abs(nSteps * O.dt - T) <= 1.0 * O.dt + 1e-4 * T
     vRelOut = (b2.vel - b1.vel)[0]
     # Restitution 1: the entry and exit of the contact happen between steps, giving an
-    # O(ω·dt)² energy error (ω·dt = π·dt/T ≤ 0.035, squared 1.2e-3 at most, seen ~1e-4).
+    # O(ω·dt)² energy error (ω·dt = π·dt/T ≤ 0.035, squared 1.2e-3 at most; seen ≤ 4e-5).
     assert vRelOut / vRelIn == pytest.approx(-1, abs=1e-3)
     assert kinetic_energy([0, 1]) == pytest.approx(e0, rel=1e-3)
     # Momentum: the two bodies get exactly opposite forces; only rounding of v += F/m·dt
@@ -165,30 +166,32 @@ def test_head_on_elastic_impact(dtFactor):
 
 def test_head_on_impact_geometry_and_stiffness():
     r = 0.01
-    m = head_on_pair(r, 1.0, -1.0, gap=0.01)
+    m = head_on_pair(r, 1.0, -0.6, gap=0.01)
     while O.interactions.countReal() == 0:
         O.step()
     for _ in range(5):
         O.step()
+    # the geometry of a step is computed from the positions at the start of that step
+    x1, x2 = Vector3(O.bodies[0].state.pos), Vector3(O.bodies[1].state.pos)
+    O.step()
     i = O.interactions[0, 1]
     kn = kn_formula(m.young, r, m.young, r)
     assert i.phys.kn == pytest.approx(kn, rel=1e-14)
     assert i.phys.ks == pytest.approx(ks_formula(m.young, m.poisson, r, m.young, m.poisson, r), rel=1e-14)
     assert i.phys.tangensOfFrictionAngle == pytest.approx(math.tan(m.frictionAngle), rel=1e-14)
     g = i.geom
-    x1, x2 = O.bodies[0].state.pos, O.bodies[1].state.pos
-    # the geometry is computed from the positions at the start of the last step
     assert tuple(g.normal) == (1, 0, 0)
     assert g.refR1 == r and g.refR2 == r
+    # overlap = r1 + r2 - distance (a subtraction of nearly equal numbers: 1e-12 relative)
+    assert g.penetrationDepth == pytest.approx(2 * r - (x2 - x1).norm(), rel=1e-12)
     assert g.penetrationDepth > 0
-    # Fn = Kn·overlap along the normal (3.3.3); it pushes body 0 to -x, body 1 to +x
+    # Fn = Kn·overlap along the normal; it pushes body 0 to -x, body 1 to +x
     assert i.phys.normalForce[0] == pytest.approx(kn * g.penetrationDepth, rel=1e-14)
     assert O.forces.f(0)[0] == pytest.approx(-kn * g.penetrationDepth, rel=1e-14)
     assert O.forces.f(1)[0] == pytest.approx(kn * g.penetrationDepth, rel=1e-14)
-    # contact point in the middle of the overlap (3.3.4): x1 + (r1 - δ/2)·n, with x1 of the
-    # previous step (one step of motion, |v|·dt, away from the current one)
-    cp = g.contactPoint[0]
-    assert abs(cp - (x1[0] + x2[0]) / 2) < 1e-12  # symmetric motion: the middle stays at 0
+    # contact point in the middle of the overlap (3.3.4): x1 + (r1 - δ/2)·n
+    assert g.contactPoint[0] == pytest.approx(x1[0] + r - g.penetrationDepth / 2, abs=1e-15)
+    assert tuple(g.contactPoint)[1:] == (0, 0)
     assert g.shearInc.norm() == 0
 
 
@@ -267,11 +270,48 @@ def test_sliding_with_coulomb_friction_decelerates_at_mu_g():
     assert abs(s.pos[1]) < 1e-15
 
 
+def test_sliding_sphere_with_free_rotation_ends_rolling_at_five_sevenths():
+    # The same set-up with rotations free: friction μ·m·g decelerates the translation and spins
+    # the sphere up (torque (r - δ/2)·μ·m·g, I = 2/5·m·r²) until v = ω·r. The angular momentum
+    # about the contact point, m·v·r + I·ω, is conserved, so rolling sets in at v = 5/7·v0,
+    # after t = 2·v0/(7·μ·g).
+    m = mat(young=1e7, poisson=0.3, frictionAngle=0.4, density=2600)
+    R, r, v0 = 1000.0, 0.01, 0.5
+    mu = math.tan(0.4)
+    kn = kn_formula(m.young, R, m.young, r)
+    mass = sphere_mass(r, m.density)
+    O.bodies.append([sphere((0, 0, -R), R, fixed=True, material=m), sphere((0, 0, r - mass * G / kn), r, material=m)])
+    s = O.bodies[1].state
+    s.vel = (v0, 0, 0)
+    O.engines = dem_engines(gravity=(0, 0, -G), damping=0)
+    O.dt = 0.2 * PWaveTimeStep()
+    tRoll = 2 * v0 / (7 * mu * G)
+    # while sliding: v = v0 - μ·g·t and ω = 5/2·μ·g·t/r (1e-3 as in the sliding test)
+    O.run(int(0.5 * tRoll / O.dt), True)
+    assert s.vel[0] == pytest.approx(v0 - mu * G * O.time, rel=1e-3)
+    assert s.angVel[1] == pytest.approx(2.5 * mu * G * O.time / r, rel=1e-3)
+    assert abs(s.angVel[0]) < 1e-12 and abs(s.angVel[2]) < 1e-12
+    O.run(int(tRoll / O.dt), True)
+    # Once sticking, the elastic shear spring makes v and ω oscillate about the rolling state
+    # (period ~45 steps, amplitude ~0.3 % of v); averaging over ~25 periods leaves < 1e-4.
+    vs, ws = [], []
+    for _ in range(1000):
+        O.step()
+        vs.append(s.vel[0])
+        ws.append(s.angVel[1])
+    vMean, wMean = sum(vs) / len(vs), sum(ws) / len(ws)
+    # tolerance: the lever arm r - δ/2 differs from r by 3e-5, the slope of the big sphere at
+    # x ≈ 0.03 m is 3e-5 rad, and the residual of the average: 1e-3
+    assert vMean == pytest.approx(5. / 7. * v0, rel=1e-3)
+    assert wMean * r == pytest.approx(vMean, rel=1e-3)
+
+
 # ====================================================================== 5. torque-free spin
 
-@pytest.mark.parametrize('damping', [0, 0.3])
-def test_torque_free_spin_is_preserved_and_rotates_orientation(damping):
-    O.bodies.append(sphere((0, 0, 0), 0.1, material=mat()))
+@pytest.mark.parametrize('damping, fixed', [(0, False), (0.3, False), (0.3, True)])
+def test_torque_free_spin_is_preserved_and_rotates_orientation(damping, fixed):
+    # (a non-dynamic body is rotated by its prescribed angVel just the same)
+    O.bodies.append(sphere((0, 0, 0), 0.1, material=mat(), fixed=fixed))
     w = Vector3(1.0, -2.0, 3.0)
     O.bodies[0].state.angVel = w
     O.engines = dem_engines(damping=damping)  # damping must not touch a zero angular acceleration
@@ -376,7 +416,8 @@ def test_damping_reduces_rebound_height_as_non_viscous_damping_predicts(lam):
 # ====================================================================== 7. blocked DOFs
 
 def oblique_hit(target_blocked, target_pos=(0, 0, 0), gravity=(0, 0, -G), offset=0.5, direction=(1, 0, 0), speed=1.0):
-    """A free sphere (id 1) thrown at sphere 0 off-centre (tangential forces) while gravity acts."""
+    """A free sphere (id 1) thrown at sphere 0 off-centre (tangential forces) while gravity acts
+    (in the ~600 steps of a test, 0.01 s, the projectile falls by 0.05·r only)."""
     m = mat(frictionAngle=0.6)
     r = 0.01
     d = Vector3(direction).normalized()
@@ -387,8 +428,6 @@ def oblique_hit(target_blocked, target_pos=(0, 0, 0), gravity=(0, 0, -G), offset
     O.bodies[0].state.blockedDOFs = target_blocked
     O.bodies[1].state.vel = speed * d
     O.engines = dem_engines(gravity=gravity, damping=0)
-    O.engines[-1].mask = 2  # gravity acts on the target (mask 3 & 2) only, not on the projectile
-    O.bodies[0].mask = 3
     O.dt = 0.1 * PWaveTimeStep()
 
 
@@ -438,6 +477,24 @@ def test_blocked_rotations_keep_angvel_zero_despite_tangential_forces():
     assert O.bodies[0].state.vel.norm() > 0  # and the target translates
 
 
+def test_blocked_dof_keeps_its_velocity_against_forces():
+    # A blocked DOF is not touched by forces, gravity or damping: its velocity stays as set
+    # and the position advances at that velocity.
+    oblique_hit('xz', direction=(1, 0, 0))
+    s = O.bodies[0].state
+    s.vel = (-0.2, 0, 0.3)  # towards the projectile, and up against gravity
+    O.engines[-1].damping = 0.4
+    touched = False
+    for n in range(1, 401):
+        O.step()
+        touched = touched or O.interactions.countReal() > 0
+        assert s.vel[0] == -0.2 and s.vel[2] == 0.3
+    assert touched
+    assert s.vel[1] != 0  # y is free: the off-centre hit pushed it
+    assert s.pos[0] == pytest.approx(-0.2 * n * O.dt, rel=1e-12)
+    assert s.pos[2] == pytest.approx(0.3 * n * O.dt, rel=1e-12)
+
+
 def test_blocked_dofs_string_round_trip():
     O.bodies.append(sphere((0, 0, 0), 1))
     s = O.bodies[0].state
@@ -447,6 +504,44 @@ def test_blocked_dofs_string_round_trip():
     assert s.blockedDOFs == ''
     with pytest.raises(ValueError):
         s.blockedDOFs = 'xq'
+
+
+# ---------------------------------------------------------------------- engine masks (Yade semantics)
+
+@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): in Yade a body whose mask does not match "
+                   "NewtonIntegrator.mask is not moved at all ('If mask defined and the bitwise AND between mask and "
+                   "body`s groupMask gives 0, the body will not move/rotate'); here the mask only selects which "
+                   "bodies get NewtonIntegrator.gravity, and such bodies still move")
+def test_newton_mask_leaves_non_matching_bodies_in_place():
+    m = mat()
+    O.bodies.append([sphere((0, 0, 0), 0.1, material=m, mask=1), sphere((1, 0, 0), 0.1, material=m, mask=2)])
+    for b in O.bodies:
+        b.state.vel = (0, 1, 0)
+    O.engines = dem_engines(gravity=(0, 0, -G), mask=2)
+    O.dt = 1e-3
+    O.run(10, True)
+    assert O.bodies[1].state.pos[1] > 0 and O.bodies[1].state.pos[2] < 0  # matching: moves and falls
+    assert tuple(O.bodies[0].state.pos) == (0, 0, 0)  # not matching: stays
+
+
+@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): Yade's GravityEngine.mask defaults to 0 and 0 "
+                   "means 'all bodies'; here the default is -1 and mask=0 applies gravity to no body")
+def test_gravity_engine_mask_zero_means_all_bodies():
+    O.bodies.append(sphere((0, 0, 0), 0.1, material=mat(), mask=4))
+    O.engines = [ForceResetter(), GravityEngine(gravity=(0, 0, -G), mask=0), NewtonIntegrator(damping=0)]
+    O.dt = 1e-3
+    O.step()
+    assert O.bodies[0].state.vel[2] == pytest.approx(-G * 1e-3, rel=1e-12)
+
+
+def test_gravity_engine_positive_mask_selects_bodies():
+    # the part of the mask semantics that is the same in Yade and here
+    O.bodies.append([sphere((0, 0, 0), 0.1, material=mat(), mask=1), sphere((1, 0, 0), 0.1, mask=6)])
+    O.engines = [ForceResetter(), GravityEngine(gravity=(0, 0, -G), mask=2), NewtonIntegrator(damping=0)]
+    O.dt = 1e-3
+    O.step()
+    assert O.bodies[0].state.vel[2] == 0
+    assert O.bodies[1].state.vel[2] == pytest.approx(-G * 1e-3, rel=1e-12)
 
 
 # ====================================================================== 8. kinematic bodies
@@ -588,6 +683,49 @@ def test_body_with_a_shape_without_functors_takes_no_part():
     assert tuple(O.bodies[0].state.pos) == (0, 0, 0)
 
 
+def functorless_body(center):
+    """A body built like a sphere (it has an Aabb bound) whose shape is the base Shape, for
+    which there is no Bo1 (and no Ig2) functor."""
+    b = sphere(center, 0.1)
+    b.shape = Shape()
+    return b
+
+
+@pytest.mark.xfail(strict=True, reason="BUG: a body with a bound but no Bo1 functor for its shape keeps a NaN Aabb that "
+                   "InsertionSortCollider still sorts; NaN coordinates break the sort order and two other spheres "
+                   "that overlap are never detected")
+def test_functorless_body_does_not_hide_contacts_of_other_spheres():
+    m = mat()
+    # ids 0 and 2 are spheres flying head-on at each other, id 1 (far away) has no Bo1 functor
+    O.bodies.append([sphere((0, 0, 0), 0.1, material=m), functorless_body((5, 5, 5)),
+                     sphere((0.3, 0, 0), 0.1, material=m)])
+    O.bodies[0].state.vel = (1, 0, 0)
+    O.bodies[2].state.vel = (-1, 0, 0)
+    O.engines = dem_engines()
+    O.dt = 0.05 * PWaveTimeStep()
+    maxReal = 0
+    for _ in range(int(0.4 / O.dt)):
+        O.step()
+        maxReal = max(maxReal, O.interactions.countReal())
+    # the same run without body #1 has the contact and the spheres bounce back
+    assert maxReal == 1
+    assert O.bodies[0].state.vel[0] < 0 < O.bodies[2].state.vel[0]
+
+
+@pytest.mark.filterwarnings('ignore:InteractionLoop')
+@pytest.mark.xfail(strict=True, reason="BUG: InsertionSortCollider.boundsOverlap() is true for a NaN Aabb (every "
+                   "comparison with NaN is false), so a body without a Bo1 functor gets potential interactions "
+                   "with bodies far away from it")
+def test_functorless_body_gets_no_potential_interactions():
+    m = mat()
+    O.bodies.append([sphere((0.15, 0, 0), 0.1, material=m), functorless_body((50, 50, 50)),
+                     sphere((0, 0, 0), 0.1, material=m)])
+    O.engines = dem_engines()
+    O.dt = 0.05 * PWaveTimeStep()
+    O.step()
+    assert [(i.id1, i.id2) for i in O.interactions.all()] == [(0, 2)]
+
+
 def test_material_without_ip2_raises_naming_the_materials():
     m = ElastMat(young=1e7, density=2600)
     O.bodies.append([sphere((0, 0, 0), 0.1, material=m), sphere((0.19, 0, 0), 0.1, material=m)])
@@ -645,7 +783,16 @@ def momenta():
     return P, L, pScale, lScale
 
 
-def test_many_spheres_conserve_linear_and_angular_momentum():
+@pytest.fixture
+def threads(request):
+    setNumThreads(request.param)
+    yield request.param
+    setNumThreads(1)
+
+
+@pytest.mark.parametrize('threads', [1, 2], indirect=True)
+def test_many_spheres_conserve_linear_and_angular_momentum(threads):
+    assert O.numThreads == threads
     rng = random.Random(2024)
     m = mat(frictionAngle=0.5)
     cloud = random_cloud(300, rng, 0.008, 0.012, 0.1)  # ~20 % solid fraction

@@ -6,5 +6,16 @@ namespace yade {
 namespace Shop {
     // (3.5.22): min over spheres of r / sqrt(E/ρ), ρ = mass/volume; throws if no sphere has an elastic material.
     Real PWaveTimeStep(const Scene& scene);
+    // Mean (or maximum) resultant force on dynamic bodies, gravity of the NewtonIntegrator
+    // included, divided by the mean contact force; tends to 0 at static equilibrium.
+    Real unbalancedForce(Scene& scene, bool useMaxForce);
+    // Sum of ½mv² + ½ω·Iω over dynamic bodies.
+    Real kineticEnergy(const Scene& scene);
+    // Box around all spheres (surfaces, or centers only).
+    std::pair<Vector3r, Vector3r> aabbExtremaOfSpheres(const Scene& scene, bool centers);
+    // Total volume of the spheres whose mask shares a bit with `mask` (-1: all).
+    Real spheresVolume(const Scene& scene, int mask);
+    // Number of real interactions of each dynamic sphere whose center is inside [lo, hi].
+    std::vector<int> sphereCoordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi);
 } // namespace Shop
 } // namespace yade

@@ -3,6 +3,8 @@
 #include <py/wrapper/Classes.hpp>
 #include <py/wrapper/Math.hpp>
 #include <lib/base/Logging.hpp>
+#include <pkg/common/PyRunner.hpp>
+#include <pybind11/eval.h>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
 #ifdef _OPENMP
@@ -16,6 +18,13 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindAllClasses(m);
     yade::bindOmega(m);
     yade::bindShop(m);
+    // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
+    // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
+    yade::PyRunner::setCommandRunner([](const std::string& command) {
+        pybind11::gil_scoped_acquire gil;
+        pybind11::object ns = pybind11::module_::import("__main__").attr("__dict__");
+        pybind11::exec(command, ns);
+    });
     // Engine warnings become Python RuntimeWarnings (shown once per message by default).
     yade::setWarningSink([](const std::string& msg) {
         pybind11::gil_scoped_acquire gil;

@@ -2,6 +2,7 @@
 #include <pkg/dem/Shop.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
+#include <pybind11/stl.h>
 
 namespace py = pybind11;
 
@@ -10,6 +11,16 @@ namespace yade {
 void bindShop(py::module_& m) {
     m.def("PWaveTimeStep", [] { return Shop::PWaveTimeStep(omega().scene()); },
             "Critical time step estimated from the P-wave speed (3.5.22): min over spheres of r/sqrt(E/ρ)");
+    m.def("unbalancedForce", [](bool useMaxForce) { return Shop::unbalancedForce(omega().scene(), useMaxForce); },
+            py::arg("useMaxForce") = false,
+            "Mean (or maximum) resultant force on dynamic bodies (with NewtonIntegrator's gravity) over the mean contact force");
+    m.def("kineticEnergy", [] { return Shop::kineticEnergy(omega().scene()); }, "Translational and rotational kinetic energy of dynamic bodies");
+    m.def("aabbExtremaOfSpheres", [](bool centers) { return Shop::aabbExtremaOfSpheres(omega().scene(), centers); },
+            py::arg("centers") = false, "(min, max) corners of the box around all spheres");
+    m.def("getSpheresVolume", [](int mask) { return Shop::spheresVolume(omega().scene(), mask); }, py::arg("mask") = -1,
+            "Total volume of spheres (with mask sharing a bit with `mask`; -1: all)");
+    m.def("sphereCoordinations", [](const Vector3r& lo, const Vector3r& hi) { return Shop::sphereCoordinations(omega().scene(), lo, hi); },
+            "Number of real interactions of each dynamic sphere with its center in [lo, hi]");
 }
 
 } // namespace yade

@@ -1,0 +1,20 @@
+#include <pkg/common/PyRunner.hpp>
+#include <stdexcept>
+
+namespace yade {
+
+static PyRunner::CommandRunner& runner() {
+    static PyRunner::CommandRunner r;
+    return r;
+}
+
+void PyRunner::setCommandRunner(CommandRunner r) { runner() = std::move(r); }
+
+void PyRunner::action() {
+    if (command.empty()) return;
+    if (!runner()) throw std::runtime_error("PyRunner: no Python interpreter to run '" + command + "'");
+    const std::string cmd = command; // the command may replace itself (checker.command = ...)
+    runner()(cmd);
+}
+
+} // namespace yade

@@ -1,0 +1,22 @@
+// Runs a Python command periodically (PeriodicEngine timing) in the script's namespace.
+// The interpreter is reached through a hook that the Python module installs, so the engine
+// itself does not depend on Python.
+#pragma once
+#include <core/PeriodicEngine.hpp>
+#include <functional>
+
+namespace yade {
+
+class PyRunner : public PeriodicEngine {
+public:
+    std::string command;
+    template <class V> void visit(V& v) {
+        PeriodicEngine::visit(v);
+        v.attr("command", command, "Python code to run, in the namespace of the __main__ script");
+    }
+    void action() override;
+    using CommandRunner = std::function<void(const std::string&)>;
+    static void setCommandRunner(CommandRunner runner);
+};
+
+} // namespace yade

@@ -1,0 +1,62 @@
+// Geometric sphere packings (yade.pack.SpherePack): a list of (center, radius), with the loose random
+// "cloud" generator makeCloud, and text save/load. Plain C++: no bodies, no scene, no Python.
+#pragma once
+#include <lib/base/Math.hpp>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace yade {
+
+class SpherePack {
+public:
+    struct Sph {
+        Vector3r c;
+        Real     r;
+    };
+    // Thrown by load() when the file cannot be opened (the Python binding raises FileNotFoundError).
+    struct FileError : std::runtime_error {
+        using std::runtime_error::runtime_error;
+    };
+
+    // Tries to place one sphere at a random non-overlapping position before makeCloud gives up
+    // (the value of the reference implementation: "Exceeded 1000 tries to insert non-overlapping sphere").
+    static constexpr int maxTries = 1000;
+
+    std::vector<Sph> pack;
+    Vector3r         cellSize          = Vector3r::Zero(); // periodic cell size; zero when not periodic
+    Real             appliedPsdScaling = 1.;               // factor applied to psdSizes by the last makeCloud
+
+    // Random loose packing in the box [minCorner, maxCorner] (one flat axis makes it 2D), appended to the
+    // spheres already there, which are avoided as well. Radii come from, in this order of precedence:
+    //  - psdSizes/psdCumm: piecewise-linear cumulative distribution of diameters (of mass fractions when
+    //    distributeMass); with num>0 the psd is scaled down until the num spheres fit with `porosity`;
+    //  - rMean>0: uniform in rMean·(1±rRelFuzz);
+    //  - rMean<0 and num>0: rMean estimated from the box volume, num and porosity, the porosity being
+    //    raised ((1-p)·0.9) and generation repeated until num spheres fit.
+    // With num>0 the radii are deterministic quantiles placed largest first; without it they are random and
+    // generation stops at the first sphere that cannot be placed in maxTries tries. seed<0: random seed.
+    // Returns the number of spheres in the packing (as the reference does: previous ones included).
+    long makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner, Real rMean = -1, Real rRelFuzz = 0,
+            int num = -1, bool periodic = false, Real porosity = 0.65, const std::vector<Real>& psdSizes = {},
+            const std::vector<Real>& psdCumm = {}, bool distributeMass = false, long seed = -1);
+
+    void                          add(const Vector3r& c, Real r);
+    std::size_t                   size() const { return pack.size(); }
+    bool                          isPeriodic() const { return cellSize != Vector3r::Zero(); }
+    std::pair<Vector3r, Vector3r> aabb() const; // corners of the spheres' box, radii included
+    Vector3r                      dim() const;
+    Vector3r                      center() const;
+    Real                          relDensity() const; // spheres' volume / volume of aabb()
+    void                          translate(const Vector3r& shift);
+    void                          scale(Real factor); // about center(); radii and cellSize too
+    // (diameters, cumulative fractions), bins+1 values each, diameters from the smallest to the largest;
+    // fractions of the number of spheres, or of their volume when mass.
+    std::pair<std::vector<Real>, std::vector<Real>> psd(int bins = 50, bool mass = true) const;
+    // Text: optional "##PERIODIC:: sx sy sz" line, then "x y z r" per sphere (a 5th column is ignored on load).
+    void save(const std::string& fileName) const;
+    void load(const std::string& fileName);
+};
+
+} // namespace yade
