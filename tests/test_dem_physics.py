@@ -508,10 +508,6 @@ def test_blocked_dofs_string_round_trip():
 
 # ---------------------------------------------------------------------- engine masks (Yade semantics)
 
-@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): in Yade a body whose mask does not match "
-                   "NewtonIntegrator.mask is not moved at all ('If mask defined and the bitwise AND between mask and "
-                   "body`s groupMask gives 0, the body will not move/rotate'); here the mask only selects which "
-                   "bodies get NewtonIntegrator.gravity, and such bodies still move")
 def test_newton_mask_leaves_non_matching_bodies_in_place():
     m = mat()
     O.bodies.append([sphere((0, 0, 0), 0.1, material=m, mask=1), sphere((1, 0, 0), 0.1, material=m, mask=2)])
@@ -524,8 +520,6 @@ def test_newton_mask_leaves_non_matching_bodies_in_place():
     assert tuple(O.bodies[0].state.pos) == (0, 0, 0)  # not matching: stays
 
 
-@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): Yade's GravityEngine.mask defaults to 0 and 0 "
-                   "means 'all bodies'; here the default is -1 and mask=0 applies gravity to no body")
 def test_gravity_engine_mask_zero_means_all_bodies():
     O.bodies.append(sphere((0, 0, 0), 0.1, material=mat(), mask=4))
     O.engines = [ForceResetter(), GravityEngine(gravity=(0, 0, -G), mask=0), NewtonIntegrator(damping=0)]
@@ -691,9 +685,6 @@ def functorless_body(center):
     return b
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: a body with a bound but no Bo1 functor for its shape keeps a NaN Aabb that "
-                   "InsertionSortCollider still sorts; NaN coordinates break the sort order and two other spheres "
-                   "that overlap are never detected")
 def test_functorless_body_does_not_hide_contacts_of_other_spheres():
     m = mat()
     # ids 0 and 2 are spheres flying head-on at each other, id 1 (far away) has no Bo1 functor
@@ -713,9 +704,6 @@ def test_functorless_body_does_not_hide_contacts_of_other_spheres():
 
 
 @pytest.mark.filterwarnings('ignore:InteractionLoop')
-@pytest.mark.xfail(strict=True, reason="BUG: InsertionSortCollider.boundsOverlap() is true for a NaN Aabb (every "
-                   "comparison with NaN is false), so a body without a Bo1 functor gets potential interactions "
-                   "with bodies far away from it")
 def test_functorless_body_gets_no_potential_interactions():
     m = mat()
     O.bodies.append([sphere((0.15, 0, 0), 0.1, material=m), functorless_body((50, 50, 50)),

@@ -27,7 +27,10 @@ void InsertionSortCollider::updateBounds() {
     for (const auto& b : scene->bodies) {
         if (!b || !b->shape) continue;
         BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
-        if (!f) continue; // no Bo1 functor for this shape: the body takes no part in collisions
+        if (!f) { // no Bo1 functor for this shape: the body takes no part in collisions
+            b->bound.reset();
+            continue;
+        }
         f->scene = scene;
         f->go(*b->shape, b->bound, *b->state, *b);
         b->bound->min -= Vector3r::Constant(sweep);
@@ -40,7 +43,7 @@ void InsertionSortCollider::updateBounds() {
 bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
     const Bound &A = *a.bound, &B = *b.bound;
     for (int i = 0; i < 3; ++i)
-        if (A.max[i] < B.min[i] || B.max[i] < A.min[i]) return false;
+        if (!(A.max[i] >= B.min[i] && B.max[i] >= A.min[i])) return false; // written so that NaN never overlaps
     return true;
 }
 

@@ -9,7 +9,7 @@ void GravityEngine::action() {
 #pragma omp parallel for schedule(static)
     for (long id = 0; id < n; ++id) {
         const auto& b = s.bodies[(Body::id_t)id];
-        if (!b || !b->isDynamic() || (mask != -1 && !(b->mask & mask))) continue;
+        if (!b || !b->isDynamic() || (mask != 0 && !(b->mask & mask))) continue;
         s.forces.addForce((int)id, gravity * b->state->mass);
     }
 }

@@ -7,11 +7,11 @@ namespace yade {
 class GravityEngine : public GlobalEngine {
 public:
     Vector3r gravity = Vector3r::Zero();
-    int mask = -1;
+    int mask = 0;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("gravity", gravity, "Gravitational acceleration [m/s²]", Attr::finite);
-        v.attr("mask", mask, "Applies only to bodies with (body.mask & mask) != 0 (-1: all)");
+        v.attr("mask", mask, "Applies only to bodies with (body.mask & mask) != 0 (0: all)");
     }
     void action() override;
 };

@@ -35,11 +35,11 @@ void NewtonIntegrator::action() {
     for (long id = 0; id < n; ++id) {
         const auto& b = s.bodies[(Body::id_t)id];
         if (!b) continue;
+        if (mask != -1 && !(b->mask & mask)) continue; // bodies outside the mask are not moved
         State& st = *b->state;
         if (b->isDynamic()) {
             Vector3r accel = accelOf(s.forces.getForce((int)id), Vector3r::Constant(st.mass), st.blockedDOFsMask, 0);
-            const bool gravityHere = mask == -1 || (b->mask & mask);
-            const Vector3r g = gravityHere ? accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0) : Vector3r::Zero();
+            const Vector3r g = accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0);
             if (dampGravity) accel += g;
             if (damping != 0 && st.isDamped) dampTranslation(accel, st.vel, dt);
             if (!dampGravity) accel += g;

@@ -19,7 +19,7 @@ public:
         v.attr("gravity", gravity, "Gravitational acceleration applied to dynamic bodies [m/s²]", Attr::finite);
         v.attr("dampGravity", dampGravity, "Damp the gravity force too (gravity is added before damping)");
         v.attr("maxVelocitySq", maxVelocitySq, "Largest squared velocity in the last step [m²/s²]", Attr::readonly | Attr::noSave);
-        v.attr("mask", mask, "Gravity is applied only to bodies with (body.mask & mask) != 0 (-1: all)");
+        v.attr("mask", mask, "Only bodies with (body.mask & mask) != 0 are moved (-1: all)");
     }
     void action() override;
 

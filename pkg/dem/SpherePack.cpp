@@ -1,0 +1,308 @@
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <lib/base/Logging.hpp>
+#include <limits>
+#include <pkg/dem/SpherePack.hpp>
+#include <random>
+#include <sstream>
+
+namespace yade {
+
+namespace {
+
+    using Sph = SpherePack::Sph;
+
+    std::string str(Real x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+    }
+
+    void require(bool ok, const std::string& what) {
+        if (!ok) throw std::invalid_argument("SpherePack.makeCloud: " + what);
+    }
+
+    // The generation box: lower corner and size; a zero size marks the flat axis of a 2D packing.
+    struct Box {
+        Vector3r lo, size;
+        bool     periodic;
+
+        bool flat(int a) const { return size[a] == 0; }
+        // Volume, or area of a 2D box.
+        Real measure() const {
+            Real m = 1;
+            for (int a = 0; a < 3; a++)
+                if (!flat(a)) m *= size[a];
+            return m;
+        }
+        bool is2D() const { return flat(0) || flat(1) || flat(2); }
+    };
+
+    // Volume of a sphere, or area of a disc in 2D: what the porosity of a 2D packing is measured with.
+    Real solidMeasure(Real r, bool twoD) { return twoD ? Mathr_PI * r * r : 4. / 3. * Mathr_PI * r * r * r; }
+
+    // Quantiles of the radius distribution given as points (diameter, cumulative fraction), linear in
+    // between. With `mass` the fractions are of mass: inside a segment the number of spheres per unit
+    // diameter is then ∝ d⁻³, so the cumulative number fraction is linear in d⁻².
+    class RadiusDist {
+    public:
+        RadiusDist(const std::vector<Real>& sizes, const std::vector<Real>& cumm, bool mass)
+                : d(sizes)
+                , F(cumm)
+                , mass(mass) {
+            if (mass) F = numberFractions(sizes, cumm);
+        }
+        // Radius below which a fraction c of the spheres (by number) lies.
+        Real quantile(Real c) const {
+            const std::size_t n = d.size();
+            std::size_t       k = std::upper_bound(F.begin(), F.end(), c) - F.begin();
+            k                   = std::min(std::max<std::size_t>(k, 1), n - 1) - 1;
+            if (F[k + 1] <= F[k] || d[k + 1] == d[k]) return d[k + 1] / 2;
+            const Real t = (c - F[k]) / (F[k + 1] - F[k]);
+            if (!mass) return (d[k] + t * (d[k + 1] - d[k])) / 2;
+            const Real a = std::pow(d[k], -2), b = std::pow(d[k + 1], -2);
+            return std::pow(a - t * (a - b), -0.5) / 2;
+        }
+
+    private:
+        std::vector<Real> d, F; // diameters and the cumulative number fractions at them
+        bool              mass;
+
+        // Cumulative number fractions of a piecewise-linear mass distribution (∫ m(d)/d³ per segment).
+        static std::vector<Real> numberFractions(const std::vector<Real>& d, const std::vector<Real>& M) {
+            std::vector<Real> N(d.size(), 0.);
+            for (std::size_t k = 0; k + 1 < d.size(); k++) {
+                const Real dM = M[k + 1] - M[k], dd = d[k + 1] - d[k];
+                const Real w  = dd > 0 ? dM / dd * (std::pow(d[k], -2) - std::pow(d[k + 1], -2)) / 2 : dM / std::pow(d[k], 3);
+                N[k + 1]      = N[k] + w;
+            }
+            for (Real& x : N) x /= N.back();
+            return N;
+        }
+    };
+
+    // Uniform grid over the box; each sphere is listed in every cell its bounding box touches (cells
+    // wrapped in periodic boxes), so that overlap candidates are found in the cells of the new sphere's box.
+    class CloudGrid {
+    public:
+        CloudGrid(const Box& box, Real cell)
+                : box(box) {
+            for (int a = 0; a < 3; a++) {
+                const Real cells = box.flat(a) ? 1 : (box.periodic ? std::floor(box.size[a] / cell) : std::ceil(box.size[a] / cell));
+                n[a]             = static_cast<int>(std::max<Real>(1, cells));
+                len[a]           = box.flat(a) ? 1 : box.size[a] / n[a];
+            }
+            head.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2], -1);
+        }
+        void insert(int id, const Vector3r& c, Real r) {
+            forCells(c, r, [&](std::size_t cell) {
+                entries.push_back({ id, head[cell] });
+                head[cell] = static_cast<int>(entries.size()) - 1;
+                return false;
+            });
+        }
+        // Whether test(id) is true for some sphere listed in the cells touched by the box of (c, r).
+        template <class Test> bool any(const Vector3r& c, Real r, const Test& test) const {
+            return forCells(c, r, [&](std::size_t cell) {
+                for (int e = head[cell]; e >= 0; e = entries[e].next)
+                    if (test(entries[e].id)) return true;
+                return false;
+            });
+        }
+
+    private:
+        struct Entry {
+            int id, next;
+        };
+        Box                box;
+        int                n[3];
+        Real               len[3];
+        std::vector<int>   head; // first entry of each cell, -1 if none
+        std::vector<Entry> entries;
+
+        // Cells [i0, i1] along axis a covering [from, to]; clamped to the grid, or (periodic) i0 in [0, n).
+        void range(int a, Real from, Real to, int& i0, int& i1) const {
+            Real t0 = std::floor((from - box.lo[a]) / len[a]), t1 = std::floor((to - box.lo[a]) / len[a]);
+            if (!box.periodic || box.flat(a)) {
+                i0 = static_cast<int>(std::clamp<Real>(t0, 0, n[a] - 1));
+                i1 = static_cast<int>(std::clamp<Real>(t1, 0, n[a] - 1));
+            } else if (t1 - t0 + 1 >= n[a]) {
+                i0 = 0;
+                i1 = n[a] - 1;
+            } else {
+                const Real shift = std::floor(t0 / n[a]) * n[a];
+                i0               = static_cast<int>(t0 - shift);
+                i1               = static_cast<int>(t1 - shift);
+            }
+        }
+        // Calls f(cell) for each cell touched by the box of (c, r) until f returns true.
+        template <class F> bool forCells(const Vector3r& c, Real r, const F& f) const {
+            int i0[3], i1[3];
+            for (int a = 0; a < 3; a++) range(a, c[a] - r, c[a] + r, i0[a], i1[a]);
+            for (int i = i0[0]; i <= i1[0]; i++)
+                for (int j = i0[1]; j <= i1[1]; j++)
+                    for (int k = i0[2]; k <= i1[2]; k++) {
+                        const std::size_t cell = (static_cast<std::size_t>(i % n[0]) * n[1] + j % n[1]) * n[2] + k % n[2];
+                        if (f(cell)) return true;
+                    }
+            return false;
+        }
+    };
+
+    // Places spheres at random non-overlapping positions in the box, next to those already in `pack`.
+    class Cloud {
+    public:
+        Cloud(std::vector<Sph>& pack, const Box& box, Real cell, std::mt19937& rng)
+                : pack(pack)
+                , box(box)
+                , grid(box, cell)
+                , rng(rng) {
+            for (std::size_t i = 0; i < pack.size(); i++) grid.insert(static_cast<int>(i), pack[i].c, pack[i].r);
+        }
+        // Tries maxTries random positions; appends the sphere at the first free one.
+        bool place(Real r) {
+            if (!fitsInBox(r)) return false;
+            for (int t = 0; t < SpherePack::maxTries; t++) {
+                const Vector3r c = randomCenter(r);
+                if (grid.any(c, r, [&](int id) { return overlaps(c, r, pack[id]); })) continue;
+                grid.insert(static_cast<int>(pack.size()), c, r);
+                pack.push_back({ c, r });
+                return true;
+            }
+            return false;
+        }
+
+    private:
+        std::vector<Sph>&                    pack;
+        const Box&                           box;
+        CloudGrid                            grid;
+        std::mt19937&                        rng;
+        std::uniform_real_distribution<Real> unit { 0., 1. };
+
+        bool fitsInBox(Real r) const {
+            for (int a = 0; a < 3; a++)
+                if (!box.flat(a) && (box.periodic ? 2 * r >= box.size[a] : 2 * r > box.size[a])) return false;
+            return true;
+        }
+        // Uniform over the positions keeping the sphere inside the box (any position when periodic).
+        Vector3r randomCenter(Real r) {
+            Vector3r c;
+            for (int a = 0; a < 3; a++) {
+                if (box.flat(a)) c[a] = box.lo[a];
+                else if (box.periodic) c[a] = box.lo[a] + unit(rng) * box.size[a];
+                else c[a] = box.lo[a] + r + unit(rng) * (box.size[a] - 2 * r);
+            }
+            return c;
+        }
+        // Strict overlap (touching is allowed), through the nearest periodic image if periodic.
+        bool overlaps(const Vector3r& c, Real r, const Sph& s) const {
+            Vector3r d = s.c - c;
+            if (box.periodic)
+                for (int a = 0; a < 3; a++)
+                    if (!box.flat(a)) d[a] -= box.size[a] * std::round(d[a] / box.size[a]);
+            return d.squaredNorm() < (r + s.r) * (r + s.r);
+        }
+    };
+
+    // Grid cell: geometric mean of the smallest and largest diameters (few cells per large sphere, few
+    // small spheres per cell), not so small that the grid exceeds a few million cells.
+    Real cellSize(const Box& box, Real rMin, Real rMax) {
+        const Real minCell = std::pow(box.measure() / 4e6, box.is2D() ? 1. / 2 : 1. / 3);
+        return std::max({ 2 * std::sqrt(rMin * rMax), rMax / 4, minCell });
+    }
+
+    // Radii of num spheres following `dist` deterministically, largest first: quantiles at 1-(i+½)/(num+1)
+    // (the values of the reference implementation).
+    std::vector<Real> quantiles(const RadiusDist& dist, int num) {
+        std::vector<Real> r(num);
+        for (int i = 0; i < num; i++) r[i] = dist.quantile(1 - (i + .5) / (num + 1));
+        return r;
+    }
+
+    // Places radii[i]·scale in order; stops at the first sphere that does not fit. Returns how many fit.
+    int placeAll(std::vector<Sph>& pack, const Box& box, const std::vector<Real>& radii, Real scale, std::mt19937& rng) {
+        Cloud cloud(pack, box, cellSize(box, radii.back() * scale, radii.front() * scale), rng);
+        for (std::size_t i = 0; i < radii.size(); i++)
+            if (!cloud.place(radii[i] * scale)) return static_cast<int>(i);
+        return static_cast<int>(radii.size());
+    }
+
+    // Random radii from `dist` until one cannot be placed.
+    void placeRandom(std::vector<Sph>& pack, const Box& box, const RadiusDist& dist, std::mt19937& rng) {
+        Cloud                                cloud(pack, box, cellSize(box, dist.quantile(0), dist.quantile(1)), rng);
+        std::uniform_real_distribution<Real> unit(0., 1.);
+        while (cloud.place(dist.quantile(unit(rng)))) { }
+    }
+
+    void checkBox(const Vector3r& minCorner, const Vector3r& maxCorner, bool periodic) {
+        require(isFinite(minCorner) && isFinite(maxCorner), "minCorner and maxCorner must be finite");
+        int flat = 0;
+        for (int a = 0; a < 3; a++) {
+            require(maxCorner[a] >= minCorner[a],
+                    "maxCorner must be above minCorner on every axis (axis " + std::to_string(a) + ": " + str(minCorner[a]) + " > "
+                            + str(maxCorner[a]) + ")");
+            flat += maxCorner[a] == minCorner[a];
+        }
+        require(flat <= 1, "maxCorner must be above minCorner on every axis (or on all but one for a 2D packing)");
+        require(!(periodic && flat), "a periodic packing needs maxCorner above minCorner on every axis");
+    }
+
+    void checkPsd(const std::vector<Real>& sizes, const std::vector<Real>& cumm, Real rMean) {
+        require(sizes.size() == cumm.size(),
+                "psdSizes and psdCumm must have the same length (" + std::to_string(sizes.size()) + " != " + std::to_string(cumm.size()) + ")");
+        if (sizes.empty()) return;
+        require(sizes.size() >= 2, "psdSizes and psdCumm must have at least 2 items");
+        require(!(rMean > 0), "rMean can't be combined with psdSizes");
+        for (std::size_t i = 0; i < sizes.size(); i++) {
+            require(std::isfinite(sizes[i]) && sizes[i] > 0, "psdSizes must be positive");
+            require(i == 0 || (sizes[i] >= sizes[i - 1] && cumm[i] >= cumm[i - 1]), "psdSizes and psdCumm must be non-decreasing");
+        }
+        require(cumm.front() == 0 && cumm.back() == 1, "psdCumm must go from 0 to 1");
+    }
+
+    void checkCloudArgs(Real rMean, Real rRelFuzz, int num, Real porosity, bool psd) {
+        require(!std::isnan(rMean) && std::isfinite(rMean) && rMean != 0, "rMean must be positive (or negative, to derive it from num and porosity)");
+        require(rRelFuzz >= 0 && rRelFuzz < 1, "rRelFuzz must be in [0, 1), got " + str(rRelFuzz));
+        require(psd || rMean > 0 || num > 0, "num must be positive when neither rMean nor psdSizes is given (rMean is computed from num and porosity)");
+        require(porosity >= 0 && porosity < 1, "porosity must be in [0, 1), got " + str(porosity));
+    }
+
+} // namespace
+
+long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner, Real rMean, Real rRelFuzz, int num, bool periodic,
+        Real porosity, const std::vector<Real>& psdSizes, const std::vector<Real>& psdCumm, bool distributeMass, long seed) {
+    checkBox(minCorner, maxCorner, periodic);
+    checkPsd(psdSizes, psdCumm, rMean);
+    const bool psd = !psdSizes.empty();
+    checkCloudArgs(rMean, rRelFuzz, num, porosity, psd);
+
+    const Box box { minCorner, maxCorner - minCorner, periodic };
+    if (periodic) cellSize = box.size;
+    appliedPsdScaling = 1;
+    std::mt19937     rng(seed < 0 ? std::random_device {}() : static_cast<std::mt19937::result_type>(seed));
+    const Real       r0 = rMean > 0 ? rMean : 1; // porosity mode: unit radii scaled later
+    const RadiusDist dist
+            = psd ? RadiusDist(psdSizes, psdCumm, distributeMass) : RadiusDist({ 2 * r0 * (1 - rRelFuzz), 2 * r0 * (1 + rRelFuzz) }, { 0., 1. }, false);
+
+    if (num < 0) placeRandom(pack, box, dist, rng);
+    else if (num > 0 && rMean > 0) {
+        const int placed = placeAll(pack, box, quantiles(dist, num), 1, rng);
+        if (placed < num)
+            logWarning("SpherePack.makeCloud: only " + std::to_string(placed) + " of the " + std::to_string(num) + " spheres could be placed ("
+                    + std::to_string(maxTries) + " tries per sphere); use a smaller rMean or num");
+    } else if (num > 0)
+        placeWithRetries(box, quantiles(dist, num), rRelFuzz, psd, porosity, rng);
+    return static_cast<long>(pack.size());
+}
+
+// num spheres of radii (largest first) scaled to the porosity, the porosity being raised to 1-0.9(1-p)
+// after each failed attempt: rMean = ∛(V(1-p) / (4/3 π (1+z²) num)) with unit radii (the formula of the
+// reference; ²√(A(1-p) / (π(1+z²/3) num)) in 2D), or the psd scaled down until the spheres' volume is
+// at most V(1-p) (then recorded in appliedPsdScaling).
+void SpherePack::placeWithRetries(const Box& box, const std::vector<Real>& radii, Real fuzz, bool psd, Real porosity, std::mt19937& rng) {
+}
+
+} // namespace yade
