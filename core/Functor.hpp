@@ -17,6 +17,9 @@ public:
     // Class names of the types accepted (1 or 2) and of the type produced ("" if none).
     virtual std::vector<std::string> argTypes() const { return {}; }
     virtual std::string producedType() const { return ""; }
+    // Called by the dispatching engine before each loop over bodies or interactions, outside
+    // parallel regions (e.g. to register energy terms).
+    virtual void prepare() {}
 };
 
 // Name of a registered class, for functors describing their argument types.

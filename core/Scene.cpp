@@ -32,7 +32,10 @@ Scene::Scene() {
 #endif
 }
 
-void Scene::setThreads(int n) { forces.setThreads(n); }
+void Scene::setThreads(int n) {
+    forces.setThreads(n);
+    energy.setThreads(n);
+}
 
 void Scene::setDt(Real value) {
     if (!std::isfinite(value) || value <= 0)
@@ -71,6 +74,7 @@ void Scene::moveToNextTimeStep() {
             }
         }
     } stepEnd{*this};
+    if (trackEnergy) energy.resetInstantaneous();
     const auto running = engines; // engines may be replaced from inside a step
     for (const auto& e : running) {
         e->scene = this;

@@ -1,6 +1,7 @@
 // The whole simulation: bodies, interactions, forces, materials, engines and time (1.2.1).
 #pragma once
 #include <core/BodyContainer.hpp>
+#include <core/EnergyTracker.hpp>
 #include <core/Engine.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/InteractionContainer.hpp>
@@ -14,6 +15,7 @@ public:
     BodyContainer bodies;
     InteractionContainer interactions;
     ForceContainer forces;
+    EnergyTracker energy;
     std::vector<std::shared_ptr<Material>> materials;
     long long iter = 0;
     long long stopAtIter = 0;

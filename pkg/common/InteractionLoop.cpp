@@ -43,7 +43,10 @@ void InteractionLoop::action() {
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
     if (changed) checkFunctorChain();
     for (auto* d : std::initializer_list<Dispatcher*>{geomDispatcher.get(), physDispatcher.get(), lawDispatcher.get()})
-        for (const auto& f : d->functorsBase()) f->scene = &s;
+        for (const auto& f : d->functorsBase()) {
+            f->scene = &s;
+            f->prepare();
+        }
 
     const BodyContainer& bodies = s.bodies;
     const long n = (long)s.interactions.size();

@@ -3,6 +3,12 @@
 
 namespace yade {
 
+void Law2_ScGeom_FrictPhys_CundallStrack::prepare() {
+    if (!scene->trackEnergy) return;
+    elastId = scene->energy.term("elastPotential", false);
+    plastId = scene->energy.term("plastDissip", true);
+}
+
 bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Interaction& I) {
     if (geom.penetrationDepth < 0) { // the bodies separated
         if (!neverErase) return false;
@@ -13,7 +19,13 @@ bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Inte
     Vector3r& shearForce = geom.rotate(phys.shearForce);
     shearForce -= phys.ks * geom.shearInc; // trial shear force
     const Real maxFs2 = phys.normalForce.squaredNorm() * phys.tangensOfFrictionAngle * phys.tangensOfFrictionAngle;
-    if (shearForce.squaredNorm() > maxFs2) shearForce *= std::sqrt(maxFs2) / shearForce.norm(); // sliding
+    if (shearForce.squaredNorm() > maxFs2) { // sliding: Mohr-Coulomb return
+        const Vector3r trial = shearForce;
+        shearForce *= std::sqrt(maxFs2) / shearForce.norm();
+        if (scene->trackEnergy) scene->energy.add(plastId, (trial - shearForce).dot(shearForce) / phys.ks);
+    }
+    if (scene->trackEnergy)
+        scene->energy.add(elastId, 0.5 * (phys.normalForce.squaredNorm() / phys.kn + (phys.ks > 0 ? shearForce.squaredNorm() / phys.ks : 0)));
     const Vector3r force = -phys.normalForce - shearForce; // on body 1
     ForceContainer& forces = scene->forces;
     forces.addForce(I.id1, force);

@@ -15,6 +15,10 @@ public:
         v.attr("neverErase", neverErase, "Keep contacts whose bodies separated (forces zeroed) instead of removing them");
     }
     bool go(ScGeom& geom, FrictPhys& phys, Interaction& I) override;
+    void prepare() override; // energy terms
+
+private:
+    int elastId = -1, plastId = -1; // O.energy terms elastPotential, plastDissip (when tracked)
 };
 
 } // namespace yade

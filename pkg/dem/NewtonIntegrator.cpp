@@ -29,6 +29,13 @@ void NewtonIntegrator::action() {
     Scene& s = *scene;
     const Real dt = s.dt;
     s.forces.sync();
+    const bool energy = s.trackEnergy;
+    int kinId = -1, gravId = -1, dampId = -1;
+    if (energy) {
+        kinId = s.energy.term("kinetic", false);
+        gravId = s.energy.term("gravWork", true);
+        dampId = s.energy.term("nonviscDamp", true);
+    }
     const long n = (long)s.bodies.size();
     Real maxV2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : maxV2)
@@ -41,11 +48,19 @@ void NewtonIntegrator::action() {
             Vector3r accel = accelOf(s.forces.getForce((int)id), Vector3r::Constant(st.mass), st.blockedDOFsMask, 0);
             const Vector3r g = accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0);
             if (dampGravity) accel += g;
+            const Vector3r undamped = accel;
             if (damping != 0 && st.isDamped) dampTranslation(accel, st.vel, dt);
             if (!dampGravity) accel += g;
-            st.vel += dt * accel;
             Vector3r angAccel = accelOf(s.forces.getTorque((int)id), st.inertia, st.blockedDOFsMask, 3);
+            const Vector3r angUndamped = angAccel;
             if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel);
+            if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
+                if (gravity != Vector3r::Zero()) s.energy.add(gravId, -st.mass * g.dot(st.vel) * dt); // the move x_{n-1} -> x_n
+                const Vector3r v = st.vel + 0.5 * dt * accel, w = st.angVel + 0.5 * dt * angAccel;
+                s.energy.add(kinId, 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w)));
+                if (damping != 0) s.energy.add(dampId, -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w))));
+            }
+            st.vel += dt * accel;
             st.angVel += dt * angAccel;
         }
         maxV2 = std::max(maxV2, st.vel.squaredNorm());

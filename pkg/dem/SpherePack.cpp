@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -209,7 +210,7 @@ namespace {
 
     // Grid cell: geometric mean of the smallest and largest diameters (few cells per large sphere, few
     // small spheres per cell), not so small that the grid exceeds a few million cells.
-    Real cellSize(const Box& box, Real rMin, Real rMax) {
+    Real gridCell(const Box& box, Real rMin, Real rMax) {
         const Real minCell = std::pow(box.measure() / 4e6, box.is2D() ? 1. / 2 : 1. / 3);
         return std::max({ 2 * std::sqrt(rMin * rMax), rMax / 4, minCell });
     }
@@ -224,7 +225,7 @@ namespace {
 
     // Places radii[i]·scale in order; stops at the first sphere that does not fit. Returns how many fit.
     int placeAll(std::vector<Sph>& pack, const Box& box, const std::vector<Real>& radii, Real scale, std::mt19937& rng) {
-        Cloud cloud(pack, box, cellSize(box, radii.back() * scale, radii.front() * scale), rng);
+        Cloud cloud(pack, box, gridCell(box, radii.back() * scale, radii.front() * scale), rng);
         for (std::size_t i = 0; i < radii.size(); i++)
             if (!cloud.place(radii[i] * scale)) return static_cast<int>(i);
         return static_cast<int>(radii.size());
@@ -232,9 +233,44 @@ namespace {
 
     // Random radii from `dist` until one cannot be placed.
     void placeRandom(std::vector<Sph>& pack, const Box& box, const RadiusDist& dist, std::mt19937& rng) {
-        Cloud                                cloud(pack, box, cellSize(box, dist.quantile(0), dist.quantile(1)), rng);
+        Cloud                                cloud(pack, box, gridCell(box, dist.quantile(0), dist.quantile(1)), rng);
         std::uniform_real_distribution<Real> unit(0., 1.);
         while (cloud.place(dist.quantile(unit(rng)))) { }
+    }
+
+    // Scale of unit radii giving porosity p: the formula of the reference, rMean = ∛(V(1-p) / (4/3 π (1+z²) num)),
+    // or ²√(A(1-p) / (π (1+z²/3) num)) in 2D, z = rRelFuzz.
+    Real porosityRadius(const Box& box, Real p, Real z, int num) {
+        if (box.is2D()) return std::sqrt(box.measure() * (1 - p) / (Mathr_PI * (1 + z * z / 3) * num));
+        return std::cbrt(box.measure() * (1 - p) / (4. / 3. * Mathr_PI * (1 + z * z) * num));
+    }
+
+    // Largest scale (at most 1) of the psd radii for which the spheres fill at most (1-p) of the box.
+    Real psdScale(const Box& box, Real p, const std::vector<Real>& radii) {
+        Real solid = 0;
+        for (Real r : radii) solid += solidMeasure(r, box.is2D());
+        return std::min<Real>(1, std::pow(box.measure() * (1 - p) / solid, box.is2D() ? 1. / 2 : 1. / 3));
+    }
+
+    // Places all radii (largest first) scaled for the porosity p; after a failed attempt its spheres are
+    // removed and p raised to 1-0.9(1-p); each attempt starts from the seed, as in the reference.
+    // Returns the scale that succeeded.
+    Real placeWithRetries(std::vector<Sph>& pack, const Box& box, const std::vector<Real>& radii, Real z, bool psd, Real p, unsigned seed) {
+        const std::size_t before = pack.size();
+        const int         num    = static_cast<int>(radii.size());
+        while (true) {
+            std::mt19937 rng(seed);
+            const Real   scale  = psd ? psdScale(box, p, radii) : porosityRadius(box, p, z, num);
+            const int    placed = placeAll(pack, box, radii, scale, rng);
+            if (placed == num || 1 - p < 1e-6) {
+                if (placed < num)
+                    logWarning("SpherePack.makeCloud: only " + std::to_string(placed) + " of the " + std::to_string(num)
+                            + " spheres could be placed, even with porosity " + str(p));
+                return scale;
+            }
+            pack.resize(before);
+            p = 1 - 0.9 * (1 - p);
+        }
     }
 
     void checkBox(const Vector3r& minCorner, const Vector3r& maxCorner, bool periodic) {
@@ -282,7 +318,8 @@ long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner,
     const Box box { minCorner, maxCorner - minCorner, periodic };
     if (periodic) cellSize = box.size;
     appliedPsdScaling = 1;
-    std::mt19937     rng(seed < 0 ? std::random_device {}() : static_cast<std::mt19937::result_type>(seed));
+    const unsigned   seed0 = seed < 0 ? std::random_device {}() : static_cast<unsigned>(seed);
+    std::mt19937     rng(seed0);
     const Real       r0 = rMean > 0 ? rMean : 1; // porosity mode: unit radii scaled later
     const RadiusDist dist
             = psd ? RadiusDist(psdSizes, psdCumm, distributeMass) : RadiusDist({ 2 * r0 * (1 - rRelFuzz), 2 * r0 * (1 + rRelFuzz) }, { 0., 1. }, false);
@@ -293,16 +330,138 @@ long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner,
         if (placed < num)
             logWarning("SpherePack.makeCloud: only " + std::to_string(placed) + " of the " + std::to_string(num) + " spheres could be placed ("
                     + std::to_string(maxTries) + " tries per sphere); use a smaller rMean or num");
-    } else if (num > 0)
-        placeWithRetries(box, quantiles(dist, num), rRelFuzz, psd, porosity, rng);
+    } else if (num > 0) {
+        const Real scale = placeWithRetries(pack, box, quantiles(dist, num), rRelFuzz, psd, porosity, seed0);
+        if (psd) appliedPsdScaling = scale;
+    }
     return static_cast<long>(pack.size());
 }
 
-// num spheres of radii (largest first) scaled to the porosity, the porosity being raised to 1-0.9(1-p)
-// after each failed attempt: rMean = ∛(V(1-p) / (4/3 π (1+z²) num)) with unit radii (the formula of the
-// reference; ²√(A(1-p) / (π(1+z²/3) num)) in 2D), or the psd scaled down until the spheres' volume is
-// at most V(1-p) (then recorded in appliedPsdScaling).
-void SpherePack::placeWithRetries(const Box& box, const std::vector<Real>& radii, Real fuzz, bool psd, Real porosity, std::mt19937& rng) {
+void SpherePack::add(const Vector3r& c, Real r) {
+    if (!isFinite(c)) throw std::invalid_argument("SpherePack.add: center must be finite");
+    if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("SpherePack.add: radius must be positive and finite, got " + str(r));
+    pack.push_back({ c, r });
+}
+
+std::pair<Vector3r, Vector3r> SpherePack::aabb() const {
+    Vector3r lo = Vector3r::Constant(Inf), hi = Vector3r::Constant(-Inf);
+    for (const Sph& s : pack) {
+        lo = lo.cwiseMin(s.c - Vector3r::Constant(s.r));
+        hi = hi.cwiseMax(s.c + Vector3r::Constant(s.r));
+    }
+    return { lo, hi };
+}
+
+Vector3r SpherePack::dim() const {
+    const auto box = aabb();
+    return box.second - box.first;
+}
+
+Vector3r SpherePack::center() const {
+    const auto box = aabb();
+    return (box.first + box.second) / 2;
+}
+
+Real SpherePack::relDensity() const {
+    Real volume = 0;
+    for (const Sph& s : pack) volume += solidMeasure(s.r, false);
+    return volume / dim().prod();
+}
+
+void SpherePack::translate(const Vector3r& shift) {
+    for (Sph& s : pack) s.c += shift;
+}
+
+void SpherePack::scale(Real factor) {
+    if (!(std::isfinite(factor) && factor > 0)) throw std::invalid_argument("SpherePack.scale: factor must be positive, got " + str(factor));
+    const Vector3r mid = center();
+    for (Sph& s : pack) {
+        s.c = mid + factor * (s.c - mid);
+        s.r *= factor;
+    }
+    cellSize *= factor;
+}
+
+std::pair<std::vector<Real>, std::vector<Real>> SpherePack::psd(int bins, bool mass) const {
+    if (bins < 1) throw std::invalid_argument("SpherePack.psd: bins must be at least 1");
+    if (pack.empty()) return {};
+    Real dMin = Inf, dMax = -Inf;
+    for (const Sph& s : pack) {
+        dMin = std::min(dMin, 2 * s.r);
+        dMax = std::max(dMax, 2 * s.r);
+    }
+    if (dMin == dMax) { // one size: a bin of width 1 around it, as the reference does
+        dMin -= .5;
+        dMax += .5;
+    }
+    std::vector<Real> edges(bins + 1), cumm(bins + 1, 0.), hist(bins, 0.);
+    Real              total = 0;
+    for (const Sph& s : pack) {
+        const int  bin = std::min(bins - 1, static_cast<int>((2 * s.r - dMin) / (dMax - dMin) * bins));
+        const Real w   = mass ? s.r * s.r * s.r : 1;
+        hist[bin] += w;
+        total += w;
+    }
+    for (int i = 0; i <= bins; i++) edges[i] = dMin + i * (dMax - dMin) / bins;
+    for (int i = 0; i < bins; i++) cumm[i + 1] = cumm[i] + hist[i] / total;
+    return { edges, cumm };
+}
+
+void SpherePack::save(const std::string& fileName) const {
+    std::ofstream f(fileName);
+    if (!f) throw FileError("SpherePack.save: cannot open '" + fileName + "' for writing", errno, fileName);
+    f.imbue(std::locale::classic());
+    f << std::setprecision(17);
+    if (isPeriodic()) f << "##PERIODIC:: " << cellSize[0] << " " << cellSize[1] << " " << cellSize[2] << "\n";
+    for (const Sph& s : pack) f << s.c[0] << " " << s.c[1] << " " << s.c[2] << " " << s.r << "\n";
+    if (!f.flush()) throw FileError("SpherePack.save: error writing '" + fileName + "'", errno, fileName);
+}
+
+namespace {
+    // The numbers of a line, or false if a word is not a number.
+    bool parseNumbers(const std::string& line, std::vector<Real>& out) {
+        out.clear();
+        std::istringstream words(line);
+        std::string        w;
+        while (words >> w) {
+            Real       x;
+            const auto res = std::from_chars(w.data(), w.data() + w.size(), x);
+            if (res.ec != std::errc() || res.ptr != w.data() + w.size()) return false;
+            out.push_back(x);
+        }
+        return true;
+    }
+} // namespace
+
+// Reads what save() writes, and the reference's files (a 5th column, the clump id, is ignored);
+// '#' lines other than the periodic header are comments. The packing is replaced only if all is read.
+void SpherePack::load(const std::string& fileName) {
+    std::ifstream f(fileName);
+    if (!f) throw FileError("SpherePack.load: cannot open '" + fileName + "'", errno, fileName);
+    SpherePack        loaded;
+    std::string       line;
+    std::vector<Real> x;
+    const std::string header = "##PERIODIC::";
+    for (int lineNo = 1; std::getline(f, line); lineNo++) {
+        const std::string where = "SpherePack.load: " + fileName + ", line " + std::to_string(lineNo) + ": ";
+        const bool        isHeader = line.compare(0, header.size(), header) == 0;
+        const std::size_t first    = line.find_first_not_of(" \t\r");
+        if (!isHeader && first != std::string::npos && line[first] == '#') continue;
+        if (!parseNumbers(isHeader ? line.substr(header.size()) : line, x)) throw std::invalid_argument(where + "not a number in '" + line + "'");
+        if (x.empty()) continue;
+        if (isHeader) {
+            if (x.size() != 3 || !(x[0] > 0 && x[1] > 0 && x[2] > 0)) throw std::invalid_argument(where + "expected 3 positive cell sizes");
+            loaded.cellSize = Vector3r(x[0], x[1], x[2]);
+            continue;
+        }
+        if (x.size() != 4 && x.size() != 5) throw std::invalid_argument(where + "expected 'x y z r', got '" + line + "'");
+        try {
+            loaded.add(Vector3r(x[0], x[1], x[2]), x[3]);
+        } catch (const std::invalid_argument& e) { throw std::invalid_argument(where + e.what()); }
+    }
+    if (f.bad()) throw FileError("SpherePack.load: error reading '" + fileName + "'", errno, fileName);
+    pack     = std::move(loaded.pack);
+    cellSize = loaded.cellSize;
 }
 
 } // namespace yade

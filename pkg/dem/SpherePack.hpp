@@ -15,9 +15,15 @@ public:
         Vector3r c;
         Real     r;
     };
-    // Thrown by load() when the file cannot be opened (the Python binding raises FileNotFoundError).
+    // Thrown when a file cannot be opened or written, with errno and the file name (Python: OSError, so
+    // FileNotFoundError for a missing file).
     struct FileError : std::runtime_error {
-        using std::runtime_error::runtime_error;
+        FileError(const std::string& what, int err, const std::string& file)
+                : std::runtime_error(what)
+                , err(err)
+                , file(file) { }
+        int         err;
+        std::string file;
     };
 
     // Tries to place one sphere at a random non-overlapping position before makeCloud gives up

@@ -7,6 +7,7 @@
 #include <pybind11/eval.h>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
+#include <py/wrapper/SpherePackWrapper.hpp>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -18,6 +19,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindAllClasses(m);
     yade::bindOmega(m);
     yade::bindShop(m);
+    yade::bindSpherePack(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
     yade::PyRunner::setCommandRunner([](const std::string& command) {

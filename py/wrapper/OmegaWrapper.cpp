@@ -201,6 +201,32 @@ struct TagsProxy {
     }
 };
 
+struct EnergyProxy {
+    py::list keys() { return py::cast(scene().energy.names()); }
+    Real get(const std::string& k) {
+        auto& e = scene().energy;
+        const auto n = e.names();
+        const auto v = e.values();
+        for (size_t i = 0; i < n.size(); ++i)
+            if (n[i] == k) return v[i];
+        throw py::key_error("No energy term '" + k + "' (O.energy.keys() lists them; is O.trackEnergy on?)");
+    }
+    py::list items() {
+        auto& e = scene().energy;
+        const auto n = e.names();
+        const auto v = e.values();
+        py::list r;
+        for (size_t i = 0; i < v.size(); ++i) r.append(py::make_tuple(n[i], v[i]));
+        return r;
+    }
+    py::list values() { return py::cast(scene().energy.values()); }
+    bool has(const std::string& k) {
+        for (const auto& n : scene().energy.names())
+            if (n == k) return true;
+        return false;
+    }
+};
+
 struct OmegaProxy {};
 } // namespace
 
@@ -243,6 +269,17 @@ void bindOmega(py::module_& m) {
             .def("keys", &TagsProxy::keys)
             .def("items", &TagsProxy::items);
 
+    py::class_<EnergyProxy>(m, "EnergyTracker", "O.energy: energy terms (filled while O.trackEnergy is True)")
+            .def("keys", &EnergyProxy::keys)
+            .def("items", &EnergyProxy::items)
+            .def("values", &EnergyProxy::values)
+            .def("__getitem__", &EnergyProxy::get)
+            .def("__contains__", &EnergyProxy::has)
+            .def("__len__", [](EnergyProxy&) { return scene().energy.names().size(); })
+            .def("__iter__", [](EnergyProxy& e) { return py::iter(e.keys()); })
+            .def("total", [](EnergyProxy&) { return scene().energy.total(); }, "Sum of all terms (constant when the budget is complete)")
+            .def("clear", [](EnergyProxy&) { scene().energy.clear(); }, "Remove all terms");
+
     using release = py::call_guard<py::gil_scoped_release>;
     static const auto startTime = std::chrono::steady_clock::now();
     py::class_<OmegaProxy>(m, "Omega", "The simulation controller; the instance is O")
@@ -251,6 +288,9 @@ void bindOmega(py::module_& m) {
             .def_property_readonly("forces", [](OmegaProxy&) { return ForceContainerProxy(); })
             .def_property_readonly("materials", [](OmegaProxy&) { return MaterialContainerProxy(); })
             .def_property_readonly("tags", [](OmegaProxy&) { return TagsProxy(); })
+            .def_property_readonly("energy", [](OmegaProxy&) { return EnergyProxy(); })
+            .def_property("trackEnergy", [](OmegaProxy&) { return scene().trackEnergy; },
+                    [](OmegaProxy&, bool v) { scene().trackEnergy = v; }, "Whether engines add to O.energy (off: no cost)")
             .def_property("engines", [](OmegaProxy&) { return scene().getEngines(); },
                     [](OmegaProxy&, py::object list) {
                         if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.engines must be a list of engines");

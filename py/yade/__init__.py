@@ -10,3 +10,4 @@ from ._yade import O, setNumThreads  # noqa: F401
 version = '0.1.0'
 
 from . import utils, geom  # noqa: E402,F401
+from . import pack  # noqa: E402,F401
