@@ -20,4 +20,12 @@ void BodyContainer::erase(id_t id) {
     ++changes;
 }
 
+void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long changeCount) {
+    for (size_t i = 0; i < all.size(); ++i)
+        if (all[i] && all[i]->id != (id_t)i)
+            throw std::invalid_argument("body at position " + std::to_string(i) + " has id " + std::to_string(all[i]->id));
+    bodies = std::move(all);
+    changes = changeCount;
+}
+
 } // namespace yade

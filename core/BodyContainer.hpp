@@ -14,6 +14,8 @@ public:
     const std::shared_ptr<Body>& operator[](id_t id) const { return bodies[id]; }
     size_t size() const { return bodies.size(); } // including holes left by erase
     void erase(id_t id);                          // the scene removes the body's interactions first
+    // Replaces the whole content (loading a file): entry i must be null or have id i.
+    void restore(std::vector<std::shared_ptr<Body>> all, long long changeCount);
     void clear() {
         bodies.clear();
         ++changes;

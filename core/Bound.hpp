@@ -17,7 +17,7 @@ public:
         v.attr("min", min, "Lower corner of the box [m]", Attr::readonly);
         v.attr("max", max, "Upper corner of the box [m]", Attr::readonly);
         v.attr("lastUpdateIter", lastUpdateIter, "Iteration when the bound was last updated", Attr::readonly | Attr::noSave);
-        v.attr("refPos", refPos, "Body position when the bound was last computed (Verlet stride)", Attr::hidden | Attr::noSave);
+        v.attr("refPos", refPos, "Body position when the bound was last computed (Verlet stride)", Attr::hidden);
     }
     YADE_INDEXABLE_ROOT(Bound)
 };

@@ -79,6 +79,12 @@ void Omega::reset() {
     scenes[current] = std::make_shared<Scene>();
 }
 
+void Omega::setScene(std::shared_ptr<Scene> s) {
+    if (inLoopThread()) throw std::runtime_error("a scene cannot be loaded from inside the simulation loop");
+    pause();
+    scenes[current] = std::move(s);
+}
+
 void Omega::switchWorld() {
     requireStopped("O.switchWorld()");
     joinLoop();

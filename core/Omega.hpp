@@ -1,6 +1,7 @@
 // The simulation controller behind Python's O: owns the scenes and the background loop thread.
 #pragma once
 #include <core/Scene.hpp>
+#include <map>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
@@ -25,6 +26,10 @@ public:
     bool inLoopThread() const { return std::this_thread::get_id() == loopThreadId; }
     void reset();       // a new empty scene
     void switchWorld(); // toggle between the primary and the secondary scene
+    // Replaces the current scene (after O.load); stops the loop first.
+    void setScene(std::shared_ptr<Scene> s);
+    // In-memory snapshots for O.saveTmp / O.loadTmp, by slot name.
+    std::map<std::string, std::string> tmpSlots;
     // Error that stopped the last background run and has not been rethrown by wait() yet.
     std::exception_ptr pendingError() const { return error; }
 

@@ -14,6 +14,9 @@ public:
     std::string getClassName() const;
     // Called after attributes were set from Python or a file; recompute derived data here.
     virtual void postLoad() {}
+    // Called before the attributes are written to a file (copy run-time state into hidden attributes).
+    virtual void preSave() {}
+    virtual void postSave() {} // after writing: drop what preSave copied
 };
 
 } // namespace yade

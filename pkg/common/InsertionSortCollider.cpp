@@ -108,7 +108,39 @@ void InsertionSortCollider::rebuild() {
     }
 }
 
+void InsertionSortCollider::preSave() {
+    savedCoords.clear();
+    savedIds.clear();
+    for (const auto& axis : axes)
+        for (const auto& e : axis) {
+            savedCoords.push_back(e.coord);
+            savedIds.push_back(2 * e.id + (e.isMin ? 1 : 0));
+        }
+}
+
+void InsertionSortCollider::postLoad() {
+    if (savedIds.empty()) return; // an attribute was set from Python, nothing to restore
+    const size_t n = savedIds.size() / 3;
+    if (savedIds.size() != savedCoords.size() || savedIds.size() % 3) {
+        lastBodyChanges = -1; // inconsistent: rebuild at the next step
+    } else {
+        for (int ax = 0; ax < 3; ++ax) {
+            axes[ax].clear();
+            for (size_t i = ax * n; i < (ax + 1) * n; ++i) axes[ax].push_back({savedCoords[i], savedIds[i] / 2, (savedIds[i] & 1) != 0});
+        }
+        verifyLists = true;
+    }
+    savedCoords.clear();
+    savedIds.clear();
+}
+
 void InsertionSortCollider::action() {
+    if (verifyLists) { // lists loaded from a file must name existing bodies with bounds
+        verifyLists = false;
+        for (const auto& axis : axes)
+            for (const auto& e : axis)
+                if (e.id < 0 || !scene->bodies.exists(e.id) || !collidable(scene->bodies[e.id])) lastBodyChanges = -1;
+    }
     if (!needsRun()) return;
     ++numAction;
     updateBounds();

@@ -16,8 +16,19 @@ public:
                 Attr::finite);
         v.attr("numAction", numAction, "How many times the collider has run (not counting skipped steps)", Attr::readonly | Attr::noSave);
         v.attr("numReinit", numReinit, "How many times the sorted lists were rebuilt from scratch", Attr::readonly | Attr::noSave);
+        // run-time state, saved so that a loaded scene continues exactly
+        v.attr("savedCoords", savedCoords, "Sorted bound coordinates (x, y, z lists), written on save", Attr::hidden);
+        v.attr("savedIds", savedIds, "Body ids ×2 (+1 for lower bounds) of savedCoords", Attr::hidden);
+        v.attr("lastBodyChanges", lastBodyChanges, "Value of the body container's change counter at the last rebuild", Attr::hidden);
+        v.attr("sweep", sweep, "Current enlargement of the bounds", Attr::hidden);
     }
     void action() override;
+    void preSave() override;
+    void postSave() override {
+        savedCoords.clear();
+        savedIds.clear();
+    }
+    void postLoad() override;
     Real sweepLength() const { return sweep; }
 
 private:
@@ -29,6 +40,9 @@ private:
     std::vector<Bound1D> axes[3];
     long long lastBodyChanges = -1;
     Real sweep = 0;
+    std::vector<Real> savedCoords;
+    std::vector<int> savedIds;
+    bool verifyLists = false; // lists came from a file: check them against the bodies first
     bool needsRun() const;
     void updateBounds();
     void rebuild();

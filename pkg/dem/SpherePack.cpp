@@ -42,9 +42,6 @@ namespace {
         bool is2D() const { return flat(0) || flat(1) || flat(2); }
     };
 
-    // Volume of a sphere, or area of a disc in 2D: what the porosity of a 2D packing is measured with.
-    Real solidMeasure(Real r, bool twoD) { return twoD ? Mathr_PI * r * r : 4. / 3. * Mathr_PI * r * r * r; }
-
     // Quantiles of the radius distribution given as points (diameter, cumulative fraction), linear in
     // between. With `mass` the fractions are of mass: inside a segment the number of spheres per unit
     // diameter is then ∝ d⁻³, so the cumulative number fraction is linear in d⁻².
@@ -54,7 +51,11 @@ namespace {
                 : d(sizes)
                 , F(cumm)
                 , mass(mass) {
-            if (mass) F = numberFractions(sizes, cumm);
+            if (mass) {
+                F          = numberFractions(sizes, cumm); // not normalized yet: number per unit mass
+                meanVolume = Mathr_PI / 6 / F.back();
+                for (Real& x : F) x /= F.back();
+            } else meanVolume = referenceNumberMeanVolume(sizes, cumm);
         }
         // Radius below which a fraction c of the spheres (by number) lies.
         Real quantile(Real c) const {
@@ -67,12 +68,16 @@ namespace {
             const Real a = std::pow(d[k], -2), b = std::pow(d[k + 1], -2);
             return std::pow(a - t * (a - b), -0.5) / 2;
         }
+        // Mean sphere volume the reference uses to scale a psd for num spheres: exact for mass
+        // distributions; for number distributions Σ ΔF π d̄³ (1 + w²) over segments (d̄: middle, w: half
+        // width, not relative), about 6 times the exact value, which leaves such packings looser than asked.
+        Real meanVolume;
 
     private:
         std::vector<Real> d, F; // diameters and the cumulative number fractions at them
         bool              mass;
 
-        // Cumulative number fractions of a piecewise-linear mass distribution (∫ m(d)/d³ per segment).
+        // Cumulative numbers of spheres per unit mass of a piecewise-linear mass distribution (∫ m(d)/d³).
         static std::vector<Real> numberFractions(const std::vector<Real>& d, const std::vector<Real>& M) {
             std::vector<Real> N(d.size(), 0.);
             for (std::size_t k = 0; k + 1 < d.size(); k++) {
@@ -80,8 +85,15 @@ namespace {
                 const Real w  = dd > 0 ? dM / dd * (std::pow(d[k], -2) - std::pow(d[k + 1], -2)) / 2 : dM / std::pow(d[k], 3);
                 N[k + 1]      = N[k] + w;
             }
-            for (Real& x : N) x /= N.back();
             return N;
+        }
+        static Real referenceNumberMeanVolume(const std::vector<Real>& d, const std::vector<Real>& F) {
+            Real v = 0;
+            for (std::size_t k = 0; k + 1 < d.size(); k++) {
+                const Real mid = (d[k] + d[k + 1]) / 2, w = (d[k + 1] - d[k]) / 2;
+                v += (F[k + 1] - F[k]) * Mathr_PI * mid * mid * mid * (1 + w * w);
+            }
+            return v;
         }
     };
 
@@ -239,28 +251,28 @@ namespace {
     }
 
     // Scale of unit radii giving porosity p: the formula of the reference, rMean = ∛(V(1-p) / (4/3 π (1+z²) num)),
-    // or ²√(A(1-p) / (π (1+z²/3) num)) in 2D, z = rRelFuzz.
+    // or ²√(A(1-p) / (π (1+z²) num)) in 2D, z = rRelFuzz.
     Real porosityRadius(const Box& box, Real p, Real z, int num) {
-        if (box.is2D()) return std::sqrt(box.measure() * (1 - p) / (Mathr_PI * (1 + z * z / 3) * num));
+        if (box.is2D()) return std::sqrt(box.measure() * (1 - p) / (Mathr_PI * (1 + z * z) * num));
         return std::cbrt(box.measure() * (1 - p) / (4. / 3. * Mathr_PI * (1 + z * z) * num));
     }
 
-    // Largest scale (at most 1) of the psd radii for which the spheres fill at most (1-p) of the box.
-    Real psdScale(const Box& box, Real p, const std::vector<Real>& radii) {
-        Real solid = 0;
-        for (Real r : radii) solid += solidMeasure(r, box.is2D());
-        return std::min<Real>(1, std::pow(box.measure() * (1 - p) / solid, box.is2D() ? 1. / 2 : 1. / 3));
+    // Scale (at most 1) of the psd for num spheres of dist.meanVolume to fill (1-p) of the box, as in the
+    // reference; a 2D box counts as dMax thick.
+    Real psdScale(const Box& box, Real p, const RadiusDist& dist, int num) {
+        const Real volume = box.measure() * (box.is2D() ? 2 * dist.quantile(1) : 1);
+        return std::min<Real>(1, std::cbrt(volume * (1 - p) / (num * dist.meanVolume)));
     }
 
     // Places all radii (largest first) scaled for the porosity p; after a failed attempt its spheres are
     // removed and p raised to 1-0.9(1-p); each attempt starts from the seed, as in the reference.
     // Returns the scale that succeeded.
-    Real placeWithRetries(std::vector<Sph>& pack, const Box& box, const std::vector<Real>& radii, Real z, bool psd, Real p, unsigned seed) {
-        const std::size_t before = pack.size();
-        const int         num    = static_cast<int>(radii.size());
+    Real placeWithRetries(std::vector<Sph>& pack, const Box& box, const RadiusDist& dist, int num, Real z, bool psd, Real p, unsigned seed) {
+        const std::size_t       before = pack.size();
+        const std::vector<Real> radii  = quantiles(dist, num);
         while (true) {
             std::mt19937 rng(seed);
-            const Real   scale  = psd ? psdScale(box, p, radii) : porosityRadius(box, p, z, num);
+            const Real   scale  = psd ? psdScale(box, p, dist, num) : porosityRadius(box, p, z, num);
             const int    placed = placeAll(pack, box, radii, scale, rng);
             if (placed == num || 1 - p < 1e-6) {
                 if (placed < num)
@@ -331,7 +343,7 @@ long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner,
             logWarning("SpherePack.makeCloud: only " + std::to_string(placed) + " of the " + std::to_string(num) + " spheres could be placed ("
                     + std::to_string(maxTries) + " tries per sphere); use a smaller rMean or num");
     } else if (num > 0) {
-        const Real scale = placeWithRetries(pack, box, quantiles(dist, num), rRelFuzz, psd, porosity, seed0);
+        const Real scale = placeWithRetries(pack, box, dist, num, rRelFuzz, psd, porosity, seed0);
         if (psd) appliedPsdScaling = scale;
     }
     return static_cast<long>(pack.size());
@@ -364,7 +376,7 @@ Vector3r SpherePack::center() const {
 
 Real SpherePack::relDensity() const {
     Real volume = 0;
-    for (const Sph& s : pack) volume += solidMeasure(s.r, false);
+    for (const Sph& s : pack) volume += 4. / 3. * Mathr_PI * s.r * s.r * s.r;
     return volume / dim().prod();
 }
 

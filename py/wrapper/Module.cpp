@@ -3,6 +3,7 @@
 #include <py/wrapper/Classes.hpp>
 #include <py/wrapper/Math.hpp>
 #include <lib/base/Logging.hpp>
+#include <lib/serialization/Node.hpp>
 #include <pkg/common/PyRunner.hpp>
 #include <pybind11/eval.h>
 #include <py/wrapper/OmegaWrapper.hpp>
@@ -17,6 +18,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::registerAllClasses();
     yade::registerMath(m);
     yade::bindAllClasses(m);
+    pybind11::register_exception<yade::FormatError>(m, "FileFormatError", PyExc_ValueError);
     yade::bindOmega(m);
     yade::bindShop(m);
     yade::bindSpherePack(m);

@@ -1,6 +1,7 @@
 // Python's O object and its containers. Proxies always act on the current scene.
 #include <chrono>
 #include <core/Functor.hpp>
+#include <core/SceneIO.hpp>
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
@@ -327,7 +328,47 @@ void bindOmega(py::module_& m) {
             .def("pause", [](OmegaProxy&) { omega().pause(); }, release(), "Stop the loop after the current step")
             .def("wait", [](OmegaProxy&) { omega().wait(); }, release(), "Block until the loop stops; raise what stopped it")
             .def("reset", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the scene with an empty one")
-            .def("switchWorld", [](OmegaProxy&) { omega().switchWorld(); }, release(), "Toggle between the primary and the secondary scene");
+            .def("switchWorld", [](OmegaProxy&) { omega().switchWorld(); }, release(), "Toggle between the primary and the secondary scene")
+            .def("_toBytes", [](OmegaProxy&, bool xml) {
+                std::string data;
+                {
+                    py::gil_scoped_release nogil;
+                    omega().pause();
+                    data = SceneIO::save(omega().scene(), xml);
+                }
+                return py::bytes(data);
+            }, py::arg("xml") = false, "The scene as a saved file's content (binary or XML)")
+            .def("_fromBytes", [](OmegaProxy&, py::bytes data) {
+                std::string s = data;
+                std::shared_ptr<Scene> loaded;
+                {
+                    py::gil_scoped_release nogil;
+                    loaded = SceneIO::load(s); // throws before anything changes
+                    omega().setScene(loaded);
+                }
+                injectLabels(loaded->getEngines());
+            }, "Replace the scene by one read from a saved file's content")
+            .def("saveTmp", [](OmegaProxy&, const std::string& slot) {
+                py::gil_scoped_release nogil;
+                omega().pause();
+                omega().tmpSlots[slot] = SceneIO::save(omega().scene(), false);
+            }, py::arg("mark") = "", "Save the scene in memory under a slot name")
+            .def("loadTmp", [](OmegaProxy&, const std::string& slot) {
+                auto it = omega().tmpSlots.find(slot);
+                if (it == omega().tmpSlots.end()) throw py::key_error("No memory-saved simulation named '" + slot + "' (O.saveTmp first)");
+                std::shared_ptr<Scene> loaded;
+                {
+                    py::gil_scoped_release nogil;
+                    loaded = SceneIO::load(it->second);
+                    omega().setScene(loaded);
+                }
+                injectLabels(loaded->getEngines());
+            }, py::arg("mark") = "", "Load the scene saved by O.saveTmp under that slot name")
+            .def("lsTmp", [](OmegaProxy&) {
+                std::vector<std::string> r;
+                for (const auto& kv : omega().tmpSlots) r.push_back(kv.first);
+                return r;
+            }, "Names of the memory slots");
     m.attr("O") = OmegaProxy();
 }
 

@@ -1,0 +1,324 @@
+#include <core/SceneIO.hpp>
+#include <cstdio>
+#include <sstream>
+#include <unordered_map>
+
+namespace yade {
+
+namespace {
+
+std::string fmt(Real x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return buf;
+}
+
+Real parseReal(const std::string& s) {
+    char* end = nullptr;
+    const Real x = std::strtod(s.c_str(), &end);
+    if (end == s.c_str()) throw FormatError("expected a number, found '" + s.substr(0, 40) + "'");
+    return x;
+}
+
+// Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
+std::vector<Real> numbers(const std::string& text, long n, const std::string& what) {
+    std::vector<Real> r;
+    std::istringstream in(text);
+    std::string tok;
+    while (in >> tok) r.push_back(parseReal(tok));
+    if (n >= 0 && (long)r.size() != n)
+        throw FormatError(what + ": expected " + std::to_string(n) + " numbers, found " + std::to_string(r.size()));
+    return r;
+}
+
+std::string joined(const Real* x, int n) {
+    std::string s;
+    for (int i = 0; i < n; ++i) s += (i ? " " : "") + fmt(x[i]);
+    return s;
+}
+
+class Writer {
+public:
+    Node write(const std::shared_ptr<Serializable>& obj) {
+        if (!obj) return Node("null");
+        auto it = ids.find(obj.get());
+        if (it != ids.end()) {
+            Node r("ref");
+            r.attrs["id"] = std::to_string(it->second);
+            return r;
+        }
+        const int id = (int)ids.size();
+        ids[obj.get()] = id;
+        obj->preSave();
+        const ClassInfo& info = ClassRegistry::instance().get(typeid(*obj));
+        Node n("obj");
+        n.attrs["class"] = info.name;
+        n.attrs["id"] = std::to_string(id);
+        for (const AttrInfo& a : info.attrs) {
+            if (a.has(Attr::noSave)) continue;
+            Node& v = n.add("a");
+            v.attrs["name"] = a.name;
+            writeValue(v, a, a.address(*obj));
+        }
+        obj->postSave();
+        return n;
+    }
+
+private:
+    std::unordered_map<const Serializable*, int> ids;
+    void writeValue(Node& v, const AttrInfo& a, void* p) {
+        switch (a.kind) {
+            case AttrKind::Bool: v.text = *static_cast<bool*>(p) ? "1" : "0"; break;
+            case AttrKind::Int: v.text = std::to_string(*static_cast<int*>(p)); break;
+            case AttrKind::Long: v.text = std::to_string(*static_cast<long long*>(p)); break;
+            case AttrKind::Real: v.text = fmt(*static_cast<Real*>(p)); break;
+            case AttrKind::String: v.text = *static_cast<std::string*>(p); break;
+            case AttrKind::Vector2r: v.text = joined(static_cast<Vector2r*>(p)->data(), 2); break;
+            case AttrKind::Vector3r: v.text = joined(static_cast<Vector3r*>(p)->data(), 3); break;
+            case AttrKind::Vector6r: v.text = joined(static_cast<Vector6r*>(p)->data(), 6); break;
+            case AttrKind::Matrix3r: v.text = joined(static_cast<Matrix3r*>(p)->data(), 9); break; // column-major
+            case AttrKind::Quaternionr: v.text = joined(static_cast<Quaternionr*>(p)->coeffs().data(), 4); break; // x y z w
+            case AttrKind::Vector2i: {
+                const auto& x = *static_cast<Vector2i*>(p);
+                v.text = std::to_string(x[0]) + " " + std::to_string(x[1]);
+                break;
+            }
+            case AttrKind::Vector3i: {
+                const auto& x = *static_cast<Vector3i*>(p);
+                v.text = std::to_string(x[0]) + " " + std::to_string(x[1]) + " " + std::to_string(x[2]);
+                break;
+            }
+            case AttrKind::IntVector:
+                for (int x : *static_cast<std::vector<int>*>(p)) v.text += std::to_string(x) + " ";
+                break;
+            case AttrKind::RealVector:
+                for (Real x : *static_cast<std::vector<Real>*>(p)) v.text += fmt(x) + " ";
+                break;
+            case AttrKind::Vector3rVector:
+                for (const auto& x : *static_cast<std::vector<Vector3r>*>(p)) v.text += joined(x.data(), 3) + " ";
+                break;
+            case AttrKind::StringVector:
+                for (const auto& x : *static_cast<std::vector<std::string>*>(p)) v.add("s").text = x;
+                break;
+            case AttrKind::Ptr: v.children.push_back(write(a.getPtr(p))); break;
+            case AttrKind::PtrVector:
+                for (const auto& x : a.getPtrVector(p)) v.children.push_back(write(x));
+                break;
+        }
+    }
+};
+
+class Reader {
+public:
+    std::shared_ptr<Serializable> read(const Node& n) {
+        if (n.tag == "null") return nullptr;
+        if (n.tag == "ref") {
+            auto it = objects.find(n.attr("id"));
+            if (it == objects.end()) throw FormatError("reference to object #" + n.attr("id") + " before its definition");
+            return it->second;
+        }
+        if (n.tag != "obj") throw FormatError("expected an object, found <" + n.tag + ">");
+        const std::string& className = n.attr("class");
+        const ClassInfo* info = ClassRegistry::instance().find(className);
+        if (!info) throw FormatError("unknown class '" + className + "'");
+        std::shared_ptr<Serializable> obj = info->factory();
+        objects[n.attr("id")] = obj;
+        for (const Node& v : n.children) {
+            const AttrInfo* a = info->findAttr(v.attr("name"));
+            if (!a) throw FormatError(className + " has no attribute '" + v.attr("name") + "'");
+            readValue(v, *a, a->address(*obj), className);
+        }
+        obj->postLoad();
+        return obj;
+    }
+
+private:
+    std::unordered_map<std::string, std::shared_ptr<Serializable>> objects;
+    void readValue(const Node& v, const AttrInfo& a, void* p, const std::string& className) {
+        const std::string where = className + "." + a.name;
+        auto fill = [&](Real* dst, int n) {
+            const auto x = numbers(v.text, n, where);
+            std::copy(x.begin(), x.end(), dst);
+        };
+        switch (a.kind) {
+            case AttrKind::Bool: *static_cast<bool*>(p) = parseReal(v.text) != 0; break;
+            case AttrKind::Int: *static_cast<int*>(p) = (int)parseReal(v.text); break;
+            case AttrKind::Long: *static_cast<long long*>(p) = std::stoll(v.text); break;
+            case AttrKind::Real: *static_cast<Real*>(p) = parseReal(v.text); break;
+            case AttrKind::String: *static_cast<std::string*>(p) = v.text; break;
+            case AttrKind::Vector2r: fill(static_cast<Vector2r*>(p)->data(), 2); break;
+            case AttrKind::Vector3r: fill(static_cast<Vector3r*>(p)->data(), 3); break;
+            case AttrKind::Vector6r: fill(static_cast<Vector6r*>(p)->data(), 6); break;
+            case AttrKind::Matrix3r: fill(static_cast<Matrix3r*>(p)->data(), 9); break;
+            case AttrKind::Quaternionr: fill(static_cast<Quaternionr*>(p)->coeffs().data(), 4); break;
+            case AttrKind::Vector2i: {
+                const auto x = numbers(v.text, 2, where);
+                *static_cast<Vector2i*>(p) = Vector2i((int)x[0], (int)x[1]);
+                break;
+            }
+            case AttrKind::Vector3i: {
+                const auto x = numbers(v.text, 3, where);
+                *static_cast<Vector3i*>(p) = Vector3i((int)x[0], (int)x[1], (int)x[2]);
+                break;
+            }
+            case AttrKind::IntVector: {
+                auto& dst = *static_cast<std::vector<int>*>(p);
+                dst.clear();
+                for (Real x : numbers(v.text, -1, where)) dst.push_back((int)x);
+                break;
+            }
+            case AttrKind::RealVector: *static_cast<std::vector<Real>*>(p) = numbers(v.text, -1, where); break;
+            case AttrKind::Vector3rVector: {
+                const auto x = numbers(v.text, -1, where);
+                if (x.size() % 3) throw FormatError(where + ": expected triplets of numbers");
+                auto& dst = *static_cast<std::vector<Vector3r>*>(p);
+                dst.clear();
+                for (size_t i = 0; i < x.size(); i += 3) dst.emplace_back(x[i], x[i + 1], x[i + 2]);
+                break;
+            }
+            case AttrKind::StringVector: {
+                auto& dst = *static_cast<std::vector<std::string>*>(p);
+                dst.clear();
+                for (const Node& c : v.children) dst.push_back(c.text);
+                break;
+            }
+            case AttrKind::Ptr: {
+                if (v.children.size() != 1) throw FormatError(where + ": expected one object");
+                if (!a.setPtr(p, read(v.children[0]))) throw FormatError(where + ": object of the wrong class");
+                break;
+            }
+            case AttrKind::PtrVector: {
+                std::vector<std::shared_ptr<Serializable>> xs;
+                for (const Node& c : v.children) xs.push_back(read(c));
+                if (!a.setPtrVector(p, xs)) throw FormatError(where + ": object of the wrong class in the list");
+                break;
+            }
+        }
+    }
+};
+
+template <class T> std::shared_ptr<T> readAs(Reader& r, const Node& n, const char* what) {
+    auto obj = r.read(n);
+    auto t = std::dynamic_pointer_cast<T>(obj);
+    if (obj && !t) throw FormatError(std::string("expected ") + what + ", found " + obj->getClassName());
+    return t;
+}
+
+} // namespace
+
+Node SceneIO::toNode(Scene& s) {
+    Node root("yade");
+    root.attrs["formatVersion"] = std::to_string(NodeIO::formatVersion);
+    Node& sc = root.add("scene");
+    sc.attrs["iter"] = std::to_string(s.iter);
+    sc.attrs["stopAtIter"] = std::to_string(s.stopAtIter);
+    sc.attrs["time"] = fmt(s.time);
+    sc.attrs["dt"] = fmt(s.dt);
+    sc.attrs["trackEnergy"] = s.trackEnergy ? "1" : "0";
+    sc.attrs["bodyChanges"] = std::to_string(s.bodies.changes);
+    Node& tags = sc.add("tags");
+    for (const auto& kv : s.tags) {
+        Node& t = tags.add("tag");
+        t.attrs["name"] = kv.first;
+        t.text = kv.second;
+    }
+    Node& energy = sc.add("energy");
+    const auto names = s.energy.names();
+    const auto values = s.energy.values();
+    const auto cumulative = s.energy.cumulativeFlags();
+    for (size_t i = 0; i < names.size(); ++i) {
+        Node& t = energy.add("term");
+        t.attrs["name"] = names[i];
+        t.attrs["cumulative"] = cumulative[i] ? "1" : "0";
+        t.text = fmt(values[i]);
+    }
+    Writer w;
+    Node& mats = sc.add("materials");
+    for (const auto& m : s.materials) mats.children.push_back(w.write(m));
+    Node& bodies = sc.add("bodies");
+    for (const auto& b : s.bodies) bodies.children.push_back(w.write(b));
+    Node& intrs = sc.add("interactions");
+    for (const auto& I : s.interactions) intrs.children.push_back(w.write(I));
+    Node& engines = sc.add("engines");
+    for (const auto& e : s.getEngines()) engines.children.push_back(w.write(e));
+    Node& perm = sc.add("permanentForces");
+    for (size_t i = 0; s.forces.hasPermanent() && i < s.forces.size(); ++i) {
+        const Vector3r &f = s.forces.getPermForce((int)i), &t = s.forces.getPermTorque((int)i);
+        if (f == Vector3r::Zero() && t == Vector3r::Zero()) continue;
+        Node& n = perm.add("f");
+        n.attrs["id"] = std::to_string(i);
+        n.text = joined(f.data(), 3) + " " + joined(t.data(), 3);
+    }
+    return root;
+}
+
+std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
+    if (root.tag != "yade") throw FormatError("not a saved scene (root element <" + root.tag + ">)");
+    const int version = std::stoi(root.attr("formatVersion"));
+    if (version > NodeIO::formatVersion)
+        throw FormatError("the file was written in format version " + std::to_string(version) + " by a newer build; this build reads up to version "
+                + std::to_string(NodeIO::formatVersion));
+    const Node& sc = root.child("scene");
+    auto s = std::make_shared<Scene>();
+    s->iter = std::stoll(sc.attr("iter"));
+    s->stopAtIter = std::stoll(sc.attr("stopAtIter"));
+    s->time = parseReal(sc.attr("time"));
+    s->setDt(parseReal(sc.attr("dt")));
+    s->trackEnergy = sc.attr("trackEnergy") == "1";
+    s->tags.clear();
+    for (const Node& t : sc.child("tags").children) s->tags[t.attr("name")] = t.text;
+    for (const Node& t : sc.child("energy").children) s->energy.set(t.attr("name"), parseReal(t.text), t.attr("cumulative") == "1");
+    Reader r;
+    for (const Node& n : sc.child("materials").children) {
+        auto m = readAs<Material>(r, n, "a Material");
+        if (!m) throw FormatError("None in the list of materials");
+        s->materials.push_back(m);
+    }
+    std::vector<std::shared_ptr<Body>> bodies;
+    for (const Node& n : sc.child("bodies").children) bodies.push_back(readAs<Body>(r, n, "a Body"));
+    try {
+        s->bodies.restore(std::move(bodies), std::stoll(sc.attr("bodyChanges")));
+    } catch (std::invalid_argument& e) {
+        throw FormatError(std::string("inconsistent bodies: ") + e.what());
+    }
+    s->interactions.resizeBodies(s->bodies.size());
+    s->forces.resize(s->bodies.size());
+    for (const Node& n : sc.child("interactions").children) {
+        auto I = readAs<Interaction>(r, n, "an Interaction");
+        if (!I || !s->bodies.exists(I->id1) || !s->bodies.exists(I->id2))
+            throw FormatError("an interaction refers to a body that does not exist");
+        if (!s->interactions.insert(I)) throw FormatError("the same interaction appears twice");
+    }
+    std::vector<std::shared_ptr<Engine>> engines;
+    for (const Node& n : sc.child("engines").children) {
+        auto e = readAs<Engine>(r, n, "an Engine");
+        if (!e) throw FormatError("None in the list of engines");
+        engines.push_back(e);
+    }
+    s->setEngines(engines);
+    for (const Node& n : sc.child("permanentForces").children) {
+        const long id = std::stol(n.attr("id"));
+        if (id < 0 || id >= (long)s->bodies.size()) throw FormatError("a permanent force refers to a body that does not exist");
+        const auto x = numbers(n.text, 6, "permanent force");
+        s->forces.addPermForce((int)id, Vector3r(x[0], x[1], x[2]));
+        s->forces.addPermTorque((int)id, Vector3r(x[3], x[4], x[5]));
+    }
+    return s;
+}
+
+std::string SceneIO::save(Scene& scene, bool xml) {
+    const Node root = toNode(scene);
+    return xml ? NodeIO::toXml(root) : NodeIO::toBinary(root);
+}
+
+std::shared_ptr<Scene> SceneIO::load(const std::string& data) {
+    try {
+        return fromNode(NodeIO::parse(data));
+    } catch (FormatError&) {
+        throw;
+    } catch (std::exception& e) { // stoll on garbage, bad dt...
+        throw FormatError(std::string("corrupt file: ") + e.what());
+    }
+}
+
+} // namespace yade

@@ -1,0 +1,73 @@
+"""O.save, O.load and O.reload: files in the binary or XML format of doc/file-format.md,
+gzip- or bzip2-compressed when the name ends in .gz / .bz2."""
+import bz2
+import gzip
+import os
+import tempfile
+
+from ._yade import Omega, FileFormatError
+
+_lastFile = [None]
+
+
+def _compress(fileName, data):
+    if fileName.endswith('.gz'):
+        return gzip.compress(data)
+    if fileName.endswith('.bz2'):
+        return bz2.compress(data)
+    return data
+
+
+def _decompress(fileName, data):
+    try:
+        if data[:2] == b'\x1f\x8b':
+            return gzip.decompress(data)
+        if data[:3] == b'BZh':
+            return bz2.decompress(data)
+    except (OSError, EOFError, ValueError) as e:
+        raise FileFormatError('%s: corrupt or truncated compressed file (%s)' % (fileName, e))
+    return data
+
+
+def save(self, fileName, quiet=False):
+    """Save the scene: XML if the name contains 'xml', binary otherwise; compressed for .gz/.bz2.
+    The file is written to a temporary beside the target and renamed, so a failure leaves
+    nothing half-written."""
+    fileName = os.fspath(fileName)
+    data = _compress(fileName, self._toBytes('xml' in os.path.basename(fileName)))
+    directory = os.path.dirname(os.path.abspath(fileName))
+    fd, tmp = tempfile.mkstemp(prefix='.' + os.path.basename(fileName) + '.', dir=directory)
+    try:
+        with os.fdopen(fd, 'wb') as f:
+            f.write(data)
+        os.replace(tmp, fileName)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+    _lastFile[0] = fileName
+
+
+def load(self, fileName, quiet=False):
+    """Load a scene saved by O.save; the format and compression are detected from the content.
+    A missing, truncated or corrupt file raises and leaves the current scene as it was."""
+    fileName = os.fspath(fileName)
+    with open(fileName, 'rb') as f:
+        data = f.read()
+    try:
+        self._fromBytes(_decompress(fileName, data))
+    except FileFormatError as e:
+        raise FileFormatError('%s: %s' % (fileName, e)) from None
+    _lastFile[0] = fileName
+
+
+def reload(self, quiet=False):
+    """Load again the file last saved or loaded."""
+    if _lastFile[0] is None:
+        raise RuntimeError('O.reload(): no file has been saved or loaded yet')
+    load(self, _lastFile[0], quiet)
+
+
+Omega.save = save
+Omega.load = load
+Omega.reload = reload
