@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iomanip>
 #include <lib/base/Logging.hpp>
-#include <limits>
 #include <pkg/dem/SpherePack.hpp>
 #include <random>
 #include <sstream>
@@ -312,10 +311,11 @@ namespace {
     }
 
     void checkCloudArgs(Real rMean, Real rRelFuzz, int num, Real porosity, bool psd) {
-        require(!std::isnan(rMean) && std::isfinite(rMean) && rMean != 0, "rMean must be positive (or negative, to derive it from num and porosity)");
+        require(std::isfinite(rMean) && rMean != 0, "rMean must be positive (or negative, to derive it from num and porosity)");
         require(rRelFuzz >= 0 && rRelFuzz < 1, "rRelFuzz must be in [0, 1), got " + str(rRelFuzz));
         require(psd || rMean > 0 || num > 0, "num must be positive when neither rMean nor psdSizes is given (rMean is computed from num and porosity)");
-        require(porosity >= 0 && porosity < 1, "porosity must be in [0, 1), got " + str(porosity));
+        require(rMean > 0 || num <= 0 || porosity < 1, "porosity must be below 1, got " + str(porosity));
+        require(!std::isnan(porosity), "porosity must be a number");
     }
 
 } // namespace
@@ -327,6 +327,10 @@ long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner,
     const bool psd = !psdSizes.empty();
     checkCloudArgs(rMean, rRelFuzz, num, porosity, psd);
 
+    if (rMean <= 0 && num > 0 && porosity <= 0) {
+        logWarning("SpherePack.makeCloud: porosity must be positive, using porosity=0.5 (as Yade does)");
+        porosity = .5;
+    }
     const Box box { minCorner, maxCorner - minCorner, periodic };
     if (periodic) cellSize = box.size;
     appliedPsdScaling = 1;

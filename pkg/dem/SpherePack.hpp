@@ -35,14 +35,16 @@ public:
     Real             appliedPsdScaling = 1.;               // factor applied to psdSizes by the last makeCloud
 
     // Random loose packing in the box [minCorner, maxCorner] (one flat axis makes it 2D), appended to the
-    // spheres already there, which are avoided as well. Radii come from, in this order of precedence:
+    // spheres already there, which are avoided as well. Radii come from:
     //  - psdSizes/psdCumm: piecewise-linear cumulative distribution of diameters (of mass fractions when
-    //    distributeMass); with num>0 the psd is scaled down until the num spheres fit with `porosity`;
+    //    distributeMass); with num>0 the psd is scaled down (appliedPsdScaling) for num spheres to fill
+    //    about (1-porosity) of the box, by the reference's mean-volume estimate, and further if they do not fit;
     //  - rMean>0: uniform in rMean·(1±rRelFuzz);
-    //  - rMean<0 and num>0: rMean estimated from the box volume, num and porosity, the porosity being
-    //    raised ((1-p)·0.9) and generation repeated until num spheres fit.
-    // With num>0 the radii are deterministic quantiles placed largest first; without it they are random and
-    // generation stops at the first sphere that cannot be placed in maxTries tries. seed<0: random seed.
+    //  - rMean<0 and num>0: rMean = ∛(V(1-p) / (4/3 π (1+rRelFuzz²) num)), p = porosity.
+    // With num>0 the radii are deterministic quantiles placed largest first, and (except with rMean>0) an
+    // attempt that cannot place them all is repeated with porosity raised to 1-0.9(1-p). Without num they
+    // are random and generation stops at the first sphere that cannot be placed in maxTries tries.
+    // seed<0: random seed. For a given seed the spheres are those of the reference (same mt19937 draws).
     // Returns the number of spheres in the packing (as the reference does: previous ones included).
     long makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner, Real rMean = -1, Real rRelFuzz = 0,
             int num = -1, bool periodic = false, Real porosity = 0.65, const std::vector<Real>& psdSizes = {},
