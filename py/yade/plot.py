@@ -471,4 +471,36 @@ def plot(noShow=False, subPlots=True):
             plt.close(fig)  # the Figure object stays usable (savefig) but pyplot forgets it
         except Exception:
             pass
+    _redrawAtExit(subPlots)
     return ret
+
+
+_atExit = {'subPlots': None, 'registered': False, 'rows': None}
+
+
+def _redrawAtExit(subPlots):
+    """Without a display the PNG is written when plot() is called, usually before the run; it
+    is written again with all the data when the program ends (if data were added since)."""
+    import atexit
+    _atExit['subPlots'] = subPlots
+    _atExit['rows'] = _rowCount()
+    if not _atExit['registered']:
+        atexit.register(_finalPng)
+        _atExit['registered'] = True
+
+
+def _rowCount():
+    return max((len(v) for v in data.values()), default=0)
+
+
+def _finalPng():
+    if _atExit['subPlots'] is None or _rowCount() == _atExit['rows'] or not plots:
+        return
+    try:
+        plt = _pyplot()
+        figs = createPlots(subPlots=_atExit['subPlots'])
+        _savePng(figs)
+        for fig in figs:
+            plt.close(fig)
+    except Exception as e:  # never fail at exit because of a plot
+        print('plot: could not write the final figure (%s)' % e)
