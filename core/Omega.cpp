@@ -30,17 +30,18 @@ void Omega::loop() {
         }
     } catch (...) {
         error = std::current_exception();
-        std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
+        if (!quiet) std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
     }
     running = false;
 }
 
-void Omega::run(long long nSteps) {
+void Omega::run(long long nSteps, bool quietError) {
     if (running) return;
     joinLoop();
     Scene& s = scene();
     if (nSteps > 0) s.stopAtIter = s.iter + nSteps;
     error = nullptr;
+    quiet = quietError;
     stopRequested = false;
     running = true;
     loopThread = std::thread([this] { loop(); });

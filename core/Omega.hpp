@@ -18,7 +18,8 @@ public:
 
     // Starts the loop in a background thread; nSteps > 0 stops after that many steps,
     // otherwise it runs until pause() or until iter reaches stopAtIter.
-    void run(long long nSteps = -1);
+    // quietError: the caller waits and re-raises, so do not also print the error.
+    void run(long long nSteps = -1, bool quietError = false);
     void pause(); // stops after the current step; from the loop thread it only requests the stop
     void wait();  // blocks until the loop stops; rethrows what stopped it
     void step();  // one step in the calling thread
@@ -38,7 +39,7 @@ private:
     int current = 0;
     std::thread loopThread;
     std::thread::id loopThreadId;
-    std::atomic<bool> running{false}, stopRequested{false};
+    std::atomic<bool> running{false}, stopRequested{false}, quiet{false};
     std::exception_ptr error;
     void loop();
     void joinLoop();

@@ -75,6 +75,7 @@ void Scene::moveToNextTimeStep() {
         }
     } stepEnd{*this};
     if (trackEnergy) energy.resetInstantaneous();
+    newContactBodies.clear();
     const auto running = engines; // engines may be replaced from inside a step
     for (const auto& e : running) {
         e->scene = this;

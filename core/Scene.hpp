@@ -24,6 +24,9 @@ public:
     bool isPeriodic = false;
     bool trackEnergy = false;
     std::map<std::string, std::string> tags;
+    // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
+    // the integrator's stability guard), cleared at the start of each step.
+    std::vector<Body::id_t> newContactBodies;
 
     Scene();
     // Runs every engine once and advances iter and time.

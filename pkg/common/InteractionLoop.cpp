@@ -84,6 +84,11 @@ void InteractionLoop::action() {
             }
             physEntry.functor->go(b1->material, b2->material, I);
             I.iterMadeReal = s.iter;
+#pragma omp critical(yadeNewContact)
+            {
+                s.newContactBodies.push_back(I.id1);
+                s.newContactBodies.push_back(I.id2);
+            }
         }
         const auto& lawEntry = lawDispatcher->getFunctor(*I.geom, *I.phys);
         if (!lawEntry.functor) {

@@ -1,5 +1,8 @@
 #include <core/Scene.hpp>
+#include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
+#include <pkg/dem/ScGeom.hpp>
+#include <sstream>
 
 namespace yade {
 
@@ -38,12 +41,14 @@ void NewtonIntegrator::action() {
     }
     const long n = (long)s.bodies.size();
     Real maxV2 = 0;
+    long diverged = -1; // a body whose new state is not finite (not written)
 #pragma omp parallel for schedule(static) reduction(max : maxV2)
     for (long id = 0; id < n; ++id) {
         const auto& b = s.bodies[(Body::id_t)id];
         if (!b) continue;
         if (mask != -1 && !(b->mask & mask)) continue; // bodies outside the mask are not moved
         State& st = *b->state;
+        Vector3r vel = st.vel, angVel = st.angVel;
         if (b->isDynamic()) {
             Vector3r accel = accelOf(s.forces.getForce((int)id), Vector3r::Constant(st.mass), st.blockedDOFsMask, 0);
             const Vector3r g = accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0);
@@ -60,18 +65,56 @@ void NewtonIntegrator::action() {
                 s.energy.add(kinId, 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w)));
                 if (damping != 0) s.energy.add(dampId, -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w))));
             }
-            st.vel += dt * accel;
-            st.angVel += dt * angAccel;
+            vel += dt * accel;
+            angVel += dt * angAccel;
         }
-        maxV2 = std::max(maxV2, st.vel.squaredNorm());
-        st.pos += st.vel * dt;
-        const Real angle = st.angVel.norm() * dt;
+        const Vector3r pos = st.pos + vel * dt;
+        if (!std::isfinite(pos.sum() + vel.sum() + angVel.sum())) { // stability guard: keep the last finite state
+#pragma omp critical(yadeDiverged)
+            diverged = std::max(diverged, id);
+            continue;
+        }
+        st.vel = vel;
+        st.angVel = angVel;
+        st.pos = pos;
+        maxV2 = std::max(maxV2, vel.squaredNorm());
+        const Real angle = angVel.norm() * dt;
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt
-            st.ori = Quaternionr(AngleAxisr(angle, st.angVel / st.angVel.norm())) * st.ori;
+            st.ori = Quaternionr(AngleAxisr(angle, angVel / angVel.norm())) * st.ori;
             st.ori.normalize();
         }
     }
     maxVelocitySq = maxV2;
+    if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
+    // The time step against the contacts' critical step: all contacts periodically and when O.dt
+    // changed, otherwise only the bodies that got a new contact in this step (cheap).
+    if (stabilityCheckPeriod > 0) {
+        const bool full = s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt;
+        const CriticalStep crit = full ? criticalTimeStep(s) : criticalTimeStep(s, s.newContactBodies);
+        lastCheckedDt = dt;
+        if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
+    }
+}
+
+std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std::string& what) const {
+    const CriticalStep crit = criticalTimeStep(s);
+    std::ostringstream os;
+    os.precision(3);
+    os << "Simulation unstable at step " << s.iter << ", body #" << id << ": " << what << ". Likely cause: ";
+    Real maxOverlap = 0;
+    for (const auto& I : s.interactions.withBody(id))
+        if (const auto* g = dynamic_cast<const ScGeom*>(I->geom.get()))
+            maxOverlap = std::max(maxOverlap, g->penetrationDepth / std::max(std::min(g->refR1 > 0 ? g->refR1 : g->refR2, g->refR2), Real(1e-300)));
+    if (std::isfinite(crit.dt) && s.dt > crit.dt)
+        os << "O.dt=" << s.dt << " exceeds the critical step " << crit.dt << " of body #" << crit.body
+           << "'s contacts (stiffness-based, 3.5.18); use a smaller O.dt (e.g. O.dt=" << 0.5 * crit.dt
+           << ") or a GlobalStiffnessTimeStepper";
+    else if (maxOverlap > 0.5)
+        os << "an overlap of " << 100 * maxOverlap << "% of the radius: the bodies were placed overlapping or the loading is too fast";
+    else
+        os << "none of the usual ones (time step below the critical " << crit.dt
+           << ", overlaps moderate): check forces added from Python and prescribed velocities";
+    return os.str();
 }
 
 } // namespace yade

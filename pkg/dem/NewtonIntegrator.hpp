@@ -2,9 +2,18 @@
 // spherical orientation update (3.5.2), adapted Cundall damping (3.5.12).
 #pragma once
 #include <core/Engine.hpp>
+#include <core/Body.hpp>
 #include <core/State.hpp>
+#include <stdexcept>
 
 namespace yade {
+
+class Scene;
+
+// Raised when the integrator finds a diverging state; the message names the body, the step and the cause.
+struct StabilityError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 class NewtonIntegrator : public GlobalEngine {
 public:
@@ -13,6 +22,7 @@ public:
     bool dampGravity = true;
     Real maxVelocitySq = NaN;
     int mask = -1;
+    int stabilityCheckPeriod = 10;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("damping", damping, "Numerical damping coefficient λd of (3.5.12), in [0,1)", Attr::nonNegative);
@@ -20,10 +30,14 @@ public:
         v.attr("dampGravity", dampGravity, "Damp the gravity force too (gravity is added before damping)");
         v.attr("maxVelocitySq", maxVelocitySq, "Largest squared velocity in the last step [m²/s²]", Attr::readonly | Attr::noSave);
         v.attr("mask", mask, "Only bodies with (body.mask & mask) != 0 are moved (-1: all)");
+        v.attr("stabilityCheckPeriod", stabilityCheckPeriod,
+                "Every this many steps, stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
     }
     void action() override;
 
 private:
+    Real lastCheckedDt = NaN;
+    std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
     void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const;
     void dampRotation(Vector3r& angAccel, const Vector3r& angVel) const;
 };

@@ -5,6 +5,7 @@
 #include <lib/base/Logging.hpp>
 #include <lib/serialization/Node.hpp>
 #include <pkg/common/PyRunner.hpp>
+#include <pkg/dem/NewtonIntegrator.hpp>
 #include <pybind11/eval.h>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
@@ -19,6 +20,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::registerMath(m);
     yade::bindAllClasses(m);
     pybind11::register_exception<yade::FormatError>(m, "FileFormatError", PyExc_ValueError);
+    pybind11::register_exception<yade::StabilityError>(m, "StabilityError", PyExc_RuntimeError);
     yade::bindOmega(m);
     yade::bindShop(m);
     yade::bindSpherePack(m);

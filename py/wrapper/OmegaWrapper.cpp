@@ -321,7 +321,7 @@ void bindOmega(py::module_& m) {
             .def_property_readonly("numThreads", [](OmegaProxy&) { return scene().threads(); })
             .def("step", [](OmegaProxy&) { omega().step(); }, release(), "Run one step and return")
             .def("run", [](OmegaProxy&, long long nSteps, bool wait) {
-                omega().run(nSteps);
+                omega().run(nSteps, wait);
                 if (wait) omega().wait();
             }, release(), py::arg("nSteps") = -1, py::arg("wait") = false,
                     "Run in the background (returns at once); nSteps>0 stops after that many steps; wait=True blocks until it stops")

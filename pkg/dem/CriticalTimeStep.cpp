@@ -1,0 +1,69 @@
+#include <pkg/dem/CriticalTimeStep.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+namespace {
+// Contribution (3.5.20) of a contact to the translational and rotational stiffness diagonals of
+// its first (side 1) or second body: K_ii = Σ kn·n_i² + ks·(1 - n_i²); the shear spring acts
+// on rotations through the lever arm.
+bool contribution(const Interaction& I, int side, Vector3r& kt, Vector3r& kr) {
+    const auto* phys = dynamic_cast<const NormShearPhys*>(I.phys.get());
+    const auto* geom = dynamic_cast<const GenericSpheresContact*>(I.geom.get());
+    if (!phys || !geom) return false;
+    const Vector3r n2 = geom->normal.cwiseProduct(geom->normal);
+    const Real arm = side == 1 ? geom->refR1 : geom->refR2;
+    kt = phys->kn * n2 + phys->ks * (Vector3r::Ones() - n2);
+    kr = phys->ks * (Vector3r::Ones() - n2) * (arm * arm);
+    return true;
+}
+
+void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep& best) {
+    if (!b.isDynamic()) return;
+    const State& s = *b.state;
+    for (int i = 0; i < 6; ++i) {
+        const Real K = i < 3 ? kt[i] : kr[i - 3];
+        const Real m = i < 3 ? s.mass : s.inertia[i - 3];
+        if (K <= 0 || (s.blockedDOFsMask & (1 << i))) continue;
+        const Real dt = std::sqrt(2.0) * std::sqrt(m / K); // (3.5.18)
+        if (dt < best.dt) best = CriticalStep{dt, b.id, i};
+    }
+}
+} // namespace
+
+CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& ids) {
+    CriticalStep best;
+    for (Body::id_t id : ids) {
+        if (!scene.bodies.exists(id)) continue;
+        Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
+        for (const auto& I : scene.interactions.withBody(id))
+            if (I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
+                kt += ct;
+                kr += cr;
+            }
+        lowest(*scene.bodies[id], kt, kr, best);
+    }
+    return best;
+}
+
+CriticalStep criticalTimeStep(const Scene& scene) {
+    const size_t n = scene.bodies.size();
+    std::vector<Vector3r> kTrans(n, Vector3r::Zero()), kRot(n, Vector3r::Zero());
+    Vector3r ct, cr;
+    for (const auto& I : scene.interactions) {
+        if (!I->isReal()) continue;
+        for (int side = 1; side <= 2; ++side)
+            if (contribution(*I, side, ct, cr)) {
+                const Body::id_t id = side == 1 ? I->id1 : I->id2;
+                kTrans[id] += ct;
+                kRot[id] += cr;
+            }
+    }
+    CriticalStep best;
+    for (const auto& b : scene.bodies)
+        if (b) lowest(*b, kTrans[b->id], kRot[b->id], best);
+    return best;
+}
+
+} // namespace yade

@@ -1,0 +1,19 @@
+// Stiffness-based critical time step (3.5.5): per dynamic body, the diagonal of the translational
+// and rotational stiffness matrices summed over its contacts (3.5.20), and
+// Δt = min over bodies and degrees of freedom of sqrt(2)·sqrt(m/K) (3.5.18).
+#pragma once
+#include <core/Scene.hpp>
+
+namespace yade {
+
+struct CriticalStep {
+    Real dt = Inf;         // Inf when no dynamic body has a contact
+    Body::id_t body = -1;  // the body that sets it
+    int dof = -1;          // 0-2 translation x,y,z; 3-5 rotation
+};
+
+CriticalStep criticalTimeStep(const Scene& scene);
+// The same for a few bodies only (those that just got a new contact): cost ∝ their contacts.
+CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& bodies);
+
+} // namespace yade
