@@ -23,6 +23,9 @@ bool InteractionContainer::insert(const Ptr& I) {
     if (find(a, b)) return false;
     I->linIndex = linIntrs.size();
     linIntrs.push_back(I);
+    pairIds.push_back(a);
+    pairIds.push_back(b);
+    wasReal.push_back(I->isReal());
     partners[a].emplace_back(b, I.get());
     partners[b].emplace_back(a, I.get());
     return true;
@@ -44,16 +47,24 @@ bool InteractionContainer::erase(id_t a, id_t b) {
     const size_t idx = I->linIndex;
     unlinkPartner(a, b);
     unlinkPartner(b, a);
-    if (idx != linIntrs.size() - 1) {
+    const size_t last = linIntrs.size() - 1;
+    if (idx != last) {
         linIntrs[idx] = std::move(linIntrs.back());
         linIntrs[idx]->linIndex = idx;
+        pairIds[2 * idx] = pairIds[2 * last];
+        pairIds[2 * idx + 1] = pairIds[2 * last + 1];
+        wasReal[idx] = wasReal[last];
     }
     linIntrs.pop_back();
+    pairIds.resize(2 * last);
+    wasReal.pop_back();
     return true;
 }
 
 void InteractionContainer::clear() {
     linIntrs.clear();
+    pairIds.clear();
+    wasReal.clear();
     for (auto& p : partners) p.clear();
 }
 

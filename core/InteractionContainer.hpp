@@ -27,6 +27,12 @@ public:
     }
     void eraseBody(id_t id); // every interaction of this body
 
+    // Copies kept contiguous for the hot loop (entry k describes linIntrs[k]): the two ids, and
+    // whether the interaction was real after the last InteractionLoop pass (the loop keeps it up
+    // to date), so that distant potential pairs are skipped without touching the objects.
+    std::vector<id_t> pairIds; // 2 per interaction
+    std::vector<char> wasReal;
+
 private:
     std::vector<Ptr> linIntrs;
     std::vector<std::vector<std::pair<id_t, Interaction*>>> partners; // per body: (other id, interaction)

@@ -1,6 +1,7 @@
 #include <core/Scene.hpp>
 #include <lib/base/Logging.hpp>
 #include <pkg/common/InteractionLoop.hpp>
+#include <pkg/common/Sphere.hpp>
 #include <stdexcept>
 
 namespace yade {
@@ -38,6 +39,23 @@ void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
 }
 
+Real InteractionLoop::prepareQuickReject() {
+    Sphere probe;
+    const IGeomFunctor* f = geomDispatcher->getFunctor(probe, probe).functor;
+    const Real factor = f ? f->quickRejectFactor() : -1;
+    if (factor <= 0) return -1;
+    const BodyContainer& bodies = scene->bodies;
+    spheres.resize(bodies.size());
+    const long n = (long)bodies.size();
+#pragma omp parallel for schedule(static)
+    for (long id = 0; id < n; ++id) {
+        const Body* b = bodies[(Body::id_t)id].get();
+        const Sphere* s = b && b->shape && b->shape->getClassIndex() == Sphere::classIndexStatic() ? static_cast<const Sphere*>(b->shape.get()) : nullptr;
+        spheres[id] = s ? SphereAt{b->state->pos, s->radius} : SphereAt{Vector3r::Zero(), NaN};
+    }
+    return factor;
+}
+
 void InteractionLoop::action() {
     Scene& s = *scene;
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
@@ -49,12 +67,19 @@ void InteractionLoop::action() {
         }
 
     const BodyContainer& bodies = s.bodies;
-    const long n = (long)s.interactions.size();
+    InteractionContainer& intrs = s.interactions;
+    const long n = (long)intrs.size();
+    const Real reach = prepareQuickReject();
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < n; ++k) {
-        Interaction& I = *s.interactions[(size_t)k];
+        if (reach > 0 && !intrs.wasReal[k]) { // a potential pair of spheres still apart: nothing to do
+            const SphereAt &a = spheres[intrs.pairIds[2 * k]], &b = spheres[intrs.pairIds[2 * k + 1]];
+            const Real r = reach * (a.radius + b.radius); // NaN unless both are spheres
+            if ((a.pos - b.pos).squaredNorm() > r * r) continue;
+        }
+        Interaction& I = *intrs[(size_t)k];
         const Body* b1 = bodies[I.id1].get();
         const Body* b2 = bodies[I.id2].get();
         if (!b1 || !b2 || !b1->shape || !b2->shape) continue;
@@ -67,10 +92,13 @@ void InteractionLoop::action() {
         if (geomEntry.swap) { // the functor takes the shapes in the other order
             I.swapOrder();
             std::swap(b1, b2);
+            intrs.pairIds[2 * k] = I.id1;
+            intrs.pairIds[2 * k + 1] = I.id2;
         }
         const bool wasReal = I.isReal();
         if (!geomEntry.functor->go(*b1->shape, *b2->shape, *b1->state, *b2->state, Vector3r::Zero(), false, I)) {
             if (wasReal) I.reset(); // the geometry says the contact is over
+            intrs.wasReal[k] = false;
             continue;
         }
         if (!I.phys) {
@@ -97,6 +125,7 @@ void InteractionLoop::action() {
             continue;
         }
         if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
+        intrs.wasReal[k] = I.isReal();
     }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
     if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);

@@ -5,6 +5,7 @@
 #include <core/IPhysDispatcher.hpp>
 #include <core/LawDispatcher.hpp>
 #include <set>
+#include <vector>
 
 namespace yade {
 
@@ -25,6 +26,14 @@ public:
 
 private:
     std::set<std::pair<int, int>> warnedShapePairs;
+    // Per step, contiguous: sphere centers and radii (radius NaN for other bodies), so that
+    // distant potential sphere pairs are rejected without touching bodies or interactions.
+    struct SphereAt {
+        Vector3r pos;
+        Real radius;
+    };
+    std::vector<SphereAt> spheres;
+    Real prepareQuickReject(); // fills `spheres`; the reach factor, or a negative value if unused
     void warnMissingIg2(const Shape& a, const Shape& b);
 };
 

@@ -16,6 +16,7 @@ public:
     }
     bool go(const Sphere& s1, const Sphere& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
             Interaction& I) override;
+    Real quickRejectFactor() const override { return interactionDetectionFactor; }
 };
 
 } // namespace yade
