@@ -21,6 +21,11 @@ public:
     auto end() const { return linIntrs.end(); }
     // Interactions of one body (potential and real).
     std::vector<Ptr> withBody(id_t id) const;
+    // The same without copying: (other body id, interaction) pairs.
+    const std::vector<std::pair<id_t, Interaction*>>& partnersOf(id_t id) const {
+        static const std::vector<std::pair<id_t, Interaction*>> empty;
+        return id >= 0 && (size_t)id < partners.size() ? partners[id] : empty;
+    }
     // Keeps the per-body lists as long as the body container.
     void resizeBodies(size_t n) {
         if (n > partners.size()) partners.resize(n);

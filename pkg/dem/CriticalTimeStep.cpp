@@ -37,11 +37,13 @@ CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>&
     for (Body::id_t id : ids) {
         if (!scene.bodies.exists(id)) continue;
         Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
-        for (const auto& I : scene.interactions.withBody(id))
+        for (const auto& partner : scene.interactions.partnersOf(id)) {
+            const Interaction* I = partner.second;
             if (I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
                 kt += ct;
                 kr += cr;
             }
+        }
         lowest(*scene.bodies[id], kt, kr, best);
     }
     return best;

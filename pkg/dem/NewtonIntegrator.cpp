@@ -6,19 +6,6 @@
 
 namespace yade {
 
-static inline Real sign(Real x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
-// (3.5.12): each component of the acceleration is reduced when it increases the on-step
-// velocity estimate v + a·dt/2, and increased when it decreases it.
-void NewtonIntegrator::dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const {
-    for (int i = 0; i < 3; ++i) accel[i] *= 1 - damping * sign(accel[i] * (vel[i] + 0.5 * dt * accel[i]));
-}
-
-// The same for rotations, with the mid-step angular velocity.
-void NewtonIntegrator::dampRotation(Vector3r& angAccel, const Vector3r& angVel) const {
-    for (int i = 0; i < 3; ++i) angAccel[i] *= 1 - damping * sign(angAccel[i] * angVel[i]);
-}
-
 // Acceleration of a force or torque on the free degrees of freedom; blocked ones get zero.
 static inline Vector3r accelOf(const Vector3r& f, const Vector3r& m, int blocked, int firstBit) {
     Vector3r a = f.cwiseQuotient(m);

@@ -38,8 +38,16 @@ public:
 private:
     Real lastCheckedDt = NaN;
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
-    void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const;
-    void dampRotation(Vector3r& angAccel, const Vector3r& angVel) const;
+    // (3.5.12): each component of the acceleration is reduced when it increases the on-step
+    // velocity estimate v + a·dt/2, and increased when it decreases it.
+    void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const {
+        for (int i = 0; i < 3; ++i) accel[i] *= 1 - damping * sign(accel[i] * (vel[i] + 0.5 * dt * accel[i]));
+    }
+    // The same for rotations, with the mid-step angular velocity.
+    void dampRotation(Vector3r& angAccel, const Vector3r& angVel) const {
+        for (int i = 0; i < 3; ++i) angAccel[i] *= 1 - damping * sign(angAccel[i] * angVel[i]);
+    }
+    static Real sign(Real x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 };
 
 } // namespace yade
