@@ -32,7 +32,8 @@ public:
     // Runs every engine once and advances iter and time.
     void moveToNextTimeStep();
 
-    const std::vector<std::shared_ptr<Engine>>& getEngines() const { return engines; }
+    // The engine list, or the one assigned during the current step (in effect at its end).
+    const std::vector<std::shared_ptr<Engine>>& getEngines() const { return hasNextEngines ? nextEngines : engines; }
     // Takes effect at once, or at the end of the current step if the loop is inside a step.
     void setEngines(const std::vector<std::shared_ptr<Engine>>& e);
     void setDt(Real value); // throws std::invalid_argument unless finite and positive

@@ -252,10 +252,6 @@ def test_wall_shear_increment_uses_reference_radius_lever_and_overlap_scaling():
     assert O.forces.t(ids[1])[1] == pytest.approx(.095 * 22.5789473684, rel=1e-9)
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: Ig2_Facet_Sphere_ScGeom and Ig2_Box_Sphere_ScGeom (pkg/dem/Ig2_Facet_Sphere_ScGeom.cpp:52, "
-                   "pkg/dem/Ig2_Box_Sphere_ScGeom.cpp:40) call ScGeom::precompute with the granular-ratcheting "
-                   "correction (lever arms refR, velocity scaled by (R1+R2)/(R1+R2-pen)); the reference uses the "
-                   "plain contact-point kinematics for facets and boxes")
 @pytest.mark.parametrize('name, obstacle, ks', [
     ('facet', lambda: facet([(-5, -5, 0), (5, -5, 0), (0, 5, 0)]), NU * 4. / 3. * E * .1),
     ('box', lambda: box((0, 0, -1), (5, 5, 1), fixed=True), NU * E * .1),
@@ -663,8 +659,6 @@ def test_facetCylinder_vertices_radius_height_and_inward_normals():
     assert len(used) == 40
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: geom.facetCylinder (py/yade/geom.py) appends the facets of a segment in the "
-                   "order side, side, top, bottom; the reference gives top, bottom, side, side, so body ids differ")
 def test_facetCylinder_facet_order_as_in_reference():
     fs = geom.facetCylinder((1, 2, 3), 2, 4, segmentsNumber=10)
     expected = cylinder_expected((1, 2, 3), 2, 4, 10)
@@ -738,16 +732,10 @@ def test_facetCylinder_sector_and_orientation_as_in_reference(name):
     check_cylinder_as_set(name)
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: geom.facetCylinder (py/yade/geom.py): with closeGap the plane at the start "
-                   "angle gets the outward normal (the reference's normals point into the sector) and the plane at "
-                   "the end angle is split along the other diagonal")
 def test_facetCylinder_closeGap_as_in_reference():
     check_cylinder_as_set('closeGap')
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: geom.facetCylinder (py/yade/geom.py): the cap rings of radiusTopInner / "
-                   "radiusBottomInner split each quad along the other diagonal than the reference (mirror-image "
-                   "facet positions)")
 def test_facetCylinder_rings_as_in_reference():
     check_cylinder_as_set('rings')
 

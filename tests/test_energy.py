@@ -138,11 +138,9 @@ def test_terms_depend_on_what_the_scene_does():
     assert set(O.energy.keys()) == {'kinetic', 'gravWork', 'nonviscDamp'}
 
 
-@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): NewtonIntegrator::action (pkg/dem/NewtonIntegrator.cpp) adds "
-                   "to gravWork only when gravity != 0; the reference Yade adds -m·g·v·dt for every dynamic body whenever "
-                   "O.trackEnergy is on, so O.energy['gravWork'] exists (0.0) without gravity and scripts reading it get KeyError here")
 def test_gravWork_term_exists_without_gravity_as_in_yade():
-    # Reference Yade 2023.02a, same scene: keys ['gravWork', 'kinetic'].
+    # Reference Yade 2023.02a, same scene: keys ['gravWork', 'kinetic']. (Was a bug: NewtonIntegrator
+    # added to gravWork only when gravity != 0.)
     material()
     O.bodies.append(sphere((0, 0, 0), .1))
     O.bodies[0].state.vel = (1, 0, 0)
@@ -154,13 +152,10 @@ def test_gravWork_term_exists_without_gravity_as_in_yade():
     assert O.energy['gravWork'] == 0
 
 
-@pytest.mark.xfail(strict=True, reason="BUG (Yade compatibility): Law2_ScGeom_FrictPhys_CundallStrack::go adds to plastDissip "
-                   "whenever the trial shear force exceeds the Coulomb limit, also when the dissipated amount is 0 "
-                   "(frictionAngle=0: the limit is 0), so a frictionless scene shows plastDissip=0.0; the reference Yade adds "
-                   "the dissipation only when it is > 0 and shows no plastDissip term for frictionless contacts")
 def test_no_plastDissip_term_for_frictionless_contacts_as_in_yade():
     # Reference Yade 2023.02a, same scene (a sphere resting on and sliding over another, frictionAngle=0):
-    # keys ['elastPotential', 'gravWork', 'kinetic'].
+    # keys ['elastPotential', 'gravWork', 'kinetic']. (Was a bug: the law added 0 to plastDissip for
+    # frictionless contacts; the reference adds the dissipation only when it is > 0.)
     material(frictionAngle=0)
     O.bodies.append([sphere((0, 0, 0), .1, fixed=True), sphere((0, 0, .199), .1)])
     O.bodies[1].state.vel = (.1, 0, 0)
@@ -189,8 +184,9 @@ def test_elastic_gas_conserves_energy():
     e = dict(O.energy.items())
     print('\nelastic gas: max |total - total0| = %.4f %% of the largest term (%.4g J); final terms %s'
           % (100 * drift / biggest, biggest, e))
-    assert set(e) == {'kinetic', 'elastPotential', 'plastDissip'}
-    assert e['plastDissip'] == 0  # frictionless: Fs = 0, nothing dissipated
+    # frictionless: nothing dissipated, so no plastDissip term; no gravity: gravWork stays 0 (as in Yade)
+    assert set(e) == {'kinetic', 'elastPotential', 'gravWork'}
+    assert e['gravWork'] == 0
     assert O.interactions.countReal() > 0
     assert drift / biggest < 2e-3
 
@@ -233,7 +229,8 @@ def test_single_collision_errors_are_unbiased():
 def test_deposition_with_friction_and_damping_balances():
     """200 spheres falling into a facet box: friction 0.5, damping 0.2, gravity, 10 000 steps.
     All five terms take part; max |total - total_1| < 1 % of the largest term (gravWork).
-    Measured 0.19 %."""
+    Measured 0.19 % at commit 55910cb, 0.27 % with the contact-geometry changes after it (the
+    figure follows the collision history, as in the gas test)."""
     gas_scene(seed=1, frictionAngle=.5, gravity=(0, 0, -G), damping=.2, randomVelocities=False)
     O.trackEnergy = True
     drift, biggest, t0 = max_drift(10000)
@@ -241,7 +238,7 @@ def test_deposition_with_friction_and_damping_balances():
     print('\ndeposition: max |total - total0| = %.4f %% of the largest term (%.4g J); final terms %s'
           % (100 * drift / biggest, biggest, e))
     assert set(e) == ALL_TERMS
-    assert biggest == abs(e['gravWork'])
+    assert biggest == pytest.approx(abs(e['gravWork']), rel=1e-3)  # the largest term is the work of gravity
     assert drift / biggest < 1e-2
 
 
@@ -329,12 +326,12 @@ def test_sliding_to_rest_dissipates_the_initial_kinetic_energy():
     stops: plastDissip = ½m·v0² within 1e-3.
 
     It starts at rest vertically at the static overlap m·g/kn, so no vertical motion, no gravity
-    work. Two small errors remain (measured 3.8e-4 together): the shear increment uses the
-    relative velocity scaled by α = (r1+r2)/(r1+r2-overlap) (as Yade's ScGeom does, against granular
-    ratcheting), which makes plastDissip exceed the friction work by α-1 = overlap/(2r) = 5e-5 here;
-    and the first step slides over a whole v0·dt while the kinetic term starts from the on-step
-    velocity, an O(μ·g·dt/v0) = 3e-4 offset. The residual elastic shear energy after stopping is
-    ≈ (μ·m·g)²/(2ks) = 6e-4 J, 1e-5 of ½m·v0². The values are bitwise those of the reference Yade."""
+    work. Two small errors remain (measured 3.8e-4 together): the first step slides over a whole
+    v0·dt while the kinetic term starts from the on-step velocity, an O(μ·g·dt/v0) = 3e-4 offset;
+    and the shear increment of the reference (see the next test) scales the relative velocity by
+    α = (r1+r2)/(r1+r2-overlap), which makes plastDissip exceed the friction work by
+    α-1 = overlap/(2r) = 5e-5 here. The residual elastic shear energy after stopping is
+    ≈ (μ·m·g)²/(2ks) = 6e-4 J, 1e-5 of ½m·v0²."""
     E = 1e8
     material(young=E)
     O.bodies.append(wall((0, 0, 0), axis=2))
@@ -358,6 +355,47 @@ def test_sliding_to_rest_dissipates_the_initial_kinetic_energy():
     assert e['kinetic'] < 1e-4 * KE0
     assert abs(e['gravWork']) < 1e-12 * KE0
     assert e['plastDissip'] == pytest.approx(KE0, rel=1e-3)
+
+
+def test_sliding_on_a_wall_dissipates_what_the_reference_yade_dissipates():
+    """The scene of the previous test, step for step as in this script run by the reference Yade
+    2023.02a (yade -n -x -j1), which printed plastDissip = 87.16012059750219, kinetic =
+    0.0004928139435200321, elastPotential = 0.0006218807333469279 and the final velocity
+    x = -0.009923275243739530793 after 4392 steps:
+
+        O.materials.append(FrictMat(young=1e8, poisson=.3, frictionAngle=.5, density=2600))
+        O.bodies.append(utils.wall((0, 0, 0), axis=2)); b = O.bodies.append(sphere((0, 0, .1), .1))
+        s = O.bodies[b].state; s.blockedDOFs = 'XYZ'; s.pos = (0, 0, .1 - s.mass*9.81/1e7); s.vel = (4, 0, 0)
+        O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                                     [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                     NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+        O.dt = .5*PWaveTimeStep(); O.trackEnergy = True
+        O.step(); O.run(int(1.5*4/(math.tan(.5)*9.81)/O.dt), True)
+
+    This engine reproduced these numbers bitwise at commit 55910cb. They depend on the shear
+    increment of the wall contact: the reference scales the relative velocity by
+    α = (r1+r2)/(r1+r2-overlap) (its granular-ratcheting correction, with refR1 = refR2 = r for a
+    wall), which makes plastDissip 5e-5 larger than the friction work here; without α it is
+    87.15546 (5e-5 off the reference) and the velocity -0.0099108. Tolerance 1e-9: summation order only.
+    (The kinetic term differs by design: the reference uses mid-step velocities.)"""
+    E = 1e8
+    material(young=E)
+    O.bodies.append(wall((0, 0, 0), axis=2))
+    b = O.bodies.append(sphere((0, 0, .1), .1))
+    s = O.bodies[b].state
+    s.blockedDOFs = 'XYZ'
+    s.pos = (0, 0, .1 - s.mass * G / (E * .1))
+    s.vel = (4, 0, 0)
+    O.engines = engines(gravity=(0, 0, -G), damping=0)
+    O.dt = .5 * PWaveTimeStep()
+    O.trackEnergy = True
+    O.step()
+    O.run(int(1.5 * 4 / (math.tan(.5) * G) / O.dt), True)
+    assert O.iter == 4392
+    assert O.energy['plastDissip'] == pytest.approx(87.16012059750219, rel=1e-9)
+    assert O.energy['elastPotential'] == pytest.approx(0.0006218807333469279, rel=1e-6)
+    assert s.vel[0] == pytest.approx(-0.009923275243739530793, rel=1e-9)
 
 
 def test_sliding_sphere_ends_rolling_after_dissipating_two_sevenths():

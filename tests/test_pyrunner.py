@@ -245,11 +245,6 @@ def test_engines_added_from_a_command_take_effect_at_next_step(tmp_path):
     assert out == {'before': [], 'after': [4, 5], 'n': 2, 'iter': 6}
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: O.engines read inside a running step returns the old list after an "
-                   "assignment (core/Scene.cpp: setEngines stores nextEngines while inStep, but the getter "
-                   "(OmegaWrapper.cpp 'engines' -> Scene::getEngines) still returns `engines`); the reference returns "
-                   "the pending list, so two successive `O.engines = O.engines + [...]` in one command keep both "
-                   "(here the first is lost)")
 def test_engines_assigned_twice_in_one_command_keeps_both(tmp_path):
     out = run_ok(tmp_path, """\
         import json

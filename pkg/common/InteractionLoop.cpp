@@ -69,7 +69,7 @@ void InteractionLoop::action() {
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
     const long n = (long)intrs.size();
-    const Real reach = prepareQuickReject();
+    const Real reach = fastPath ? prepareQuickReject() : -1;
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
 #pragma omp parallel for schedule(static)

@@ -14,11 +14,13 @@ public:
     std::shared_ptr<IGeomDispatcher> geomDispatcher = std::make_shared<IGeomDispatcher>();
     std::shared_ptr<IPhysDispatcher> physDispatcher = std::make_shared<IPhysDispatcher>();
     std::shared_ptr<LawDispatcher> lawDispatcher = std::make_shared<LawDispatcher>();
+    bool fastPath = true;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
+        v.attr("fastPath", fastPath, "Reject distant potential sphere pairs from contiguous positions (same results as the general path)");
     }
     void action() override;
     // Throws std::invalid_argument explaining a broken chain (an Ig2 or Ip2 product no Law2 accepts).

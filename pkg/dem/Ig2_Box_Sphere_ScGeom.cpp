@@ -37,7 +37,7 @@ bool Ig2_Box_Sphere_ScGeom::go(const Box& b, const Sphere& s, const State& st1, 
     g.contactPoint = center - (r - 0.5 * penetrationDepth) * normal;
     g.penetrationDepth = penetrationDepth;
     g.refR1 = g.refR2 = r;
-    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    g.precompute(st1, st2, scene->dt, normal, isNew, shift2, false);
     return true;
 }
 

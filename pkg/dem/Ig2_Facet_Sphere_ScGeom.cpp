@@ -49,7 +49,7 @@ bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const State& s
     g.penetrationDepth = penetrationDepth;
     g.refR1 = 2 * r; // a facet has no radius: it counts as a sphere twice as big in the stiffness
     g.refR2 = r;
-    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    g.precompute(st1, st2, scene->dt, normal, isNew, shift2, false);
     return true;
 }
 

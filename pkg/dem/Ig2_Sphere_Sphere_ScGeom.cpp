@@ -20,7 +20,7 @@ bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const Stat
     g.contactPoint = st1.pos + (s1.radius - 0.5 * g.penetrationDepth) * normal;
     g.refR1 = s1.radius;
     g.refR2 = s2.radius;
-    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    g.precompute(st1, st2, scene->dt, normal, isNew, shift2, true);
     return true;
 }
 

@@ -18,7 +18,7 @@ bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const State& st1
     g.contactPoint[ax] = st1.pos[ax]; // the center projected on the wall
     g.penetrationDepth = s.radius - std::abs(dist);
     g.refR1 = g.refR2 = s.radius;
-    g.precompute(st1, st2, scene->dt, normal, isNew, Vector3r::Zero());
+    g.precompute(st1, st2, scene->dt, normal, isNew, shift2, true);
     return true;
 }
 

@@ -22,7 +22,10 @@ bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Inte
     if (shearForce.squaredNorm() > maxFs2) { // sliding: Mohr-Coulomb return
         const Vector3r trial = shearForce;
         shearForce *= std::sqrt(maxFs2) / shearForce.norm();
-        if (scene->trackEnergy) scene->energy.add(plastId, (trial - shearForce).dot(shearForce) / phys.ks);
+        if (scene->trackEnergy) {
+            const Real dissipated = (trial - shearForce).dot(shearForce) / phys.ks;
+            if (dissipated > 0) scene->energy.add(plastId, dissipated); // frictionless contacts dissipate nothing
+        }
     }
     if (scene->trackEnergy)
         scene->energy.add(elastId, 0.5 * (phys.normalForce.squaredNorm() / phys.kn + (phys.ks > 0 ? shearForce.squaredNorm() / phys.ks : 0)));

@@ -47,7 +47,7 @@ void NewtonIntegrator::action() {
             const Vector3r angUndamped = angAccel;
             if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel);
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                if (gravity != Vector3r::Zero()) s.energy.add(gravId, -st.mass * g.dot(st.vel) * dt); // the move x_{n-1} -> x_n
+                s.energy.add(gravId, -st.mass * g.dot(st.vel) * dt); // the move x_{n-1} -> x_n
                 const Vector3r v = st.vel + 0.5 * dt * accel, w = st.angVel + 0.5 * dt * angAccel;
                 s.energy.add(kinId, 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w)));
                 if (damping != 0) s.energy.add(dampId, -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w))));

@@ -3,7 +3,7 @@
 namespace yade {
 
 void ScGeom::precompute(const State& s1, const State& s2, Real dt, const Vector3r& currentNormal, bool isNew,
-        const Vector3r& shiftVel) {
+        const Vector3r& shift2, bool avoidRatcheting) {
     if (isNew) {
         orthonormalAxis = twistAxis = Vector3r::Zero();
     } else {
@@ -11,12 +11,17 @@ void ScGeom::precompute(const State& s1, const State& s2, Real dt, const Vector3
         twistAxis = (dt * 0.5 * normal.dot(s1.angVel + s2.angVel)) * normal; // twist
     }
     normal = currentNormal;
-    // Relative velocity of the contact points as if the spheres kept their reference radii
-    // (avoids granular ratcheting): the lever arms are refR1, refR2 and the translational part
-    // is scaled by (r1+r2)/distance accordingly.
-    const Vector3r c1x = refR1 * normal, c2x = -refR2 * normal;
-    const Real alpha = (refR1 + refR2) / (refR1 + refR2 - penetrationDepth);
-    Vector3r relVel = (s2.vel + shiftVel - s1.vel) * alpha + s2.angVel.cross(c2x) - s1.angVel.cross(c1x);
+    Vector3r relVel;
+    if (avoidRatcheting) {
+        // Points as if the spheres kept their reference radii (no granular ratcheting): lever arms
+        // refR1, refR2, and the translational part scaled by (r1+r2)/distance accordingly.
+        const Vector3r c1x = refR1 * normal, c2x = -refR2 * normal;
+        const Real alpha = (refR1 + refR2) / (refR1 + refR2 - penetrationDepth);
+        relVel = (s2.vel - s1.vel) * alpha + s2.angVel.cross(c2x) - s1.angVel.cross(c1x);
+    } else { // material points of both bodies at the contact point
+        const Vector3r c1x = contactPoint - s1.pos, c2x = contactPoint - (s2.pos + shift2);
+        relVel = (s2.vel + s2.angVel.cross(c2x)) - (s1.vel + s1.angVel.cross(c1x));
+    }
     relVel -= normal.dot(relVel) * normal; // shear part only
     shearInc = relVel * dt;
 }

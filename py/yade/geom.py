@@ -57,20 +57,25 @@ def facetCylinder(center, radius, height, orientation=Quaternion.Identity, segme
         return center + q * Vector3(r * math.cos(a), r * math.sin(a), z)
 
     h = height / 2.
+    axisTop, axisBottom = center + q * Vector3(0, 0, h), center + q * Vector3(0, 0, -h)
     ret = []
-    for i in range(segmentsNumber):
+    for i in range(segmentsNumber):  # per segment: top cap, bottom cap, side (the reference's order)
         a, b = angles[i], angles[i + 1]
-        if wallMask & 4:
-            ret += _quad(point(radius, b, h), point(radius, b, -h), point(radius, a, -h), point(radius, a, h), **kw)
-        for bit, z, inner in ((1, h, radiusTopInner), (2, -h, radiusBottomInner)):
+        for bit, z, inner, axisPoint in ((1, h, radiusTopInner, axisTop), (2, -h, radiusBottomInner, axisBottom)):
             if not wallMask & bit:
                 continue
-            if inner > 0:
-                ret += _quad(point(inner, a, z), point(radius, a, z), point(radius, b, z), point(inner, b, z), **kw)
+            if inner > 0:  # a ring: two triangles per segment
+                ret.append(facet((point(inner, b, z), point(inner, a, z), point(radius, a, z)), **kw))
+                ret.append(facet((point(inner, b, z), point(radius, a, z), point(radius, b, z)), **kw))
+            elif bit == 1:
+                ret.append(facet((axisPoint, point(radius, b, z), point(radius, a, z)), **kw))
             else:
-                ret.append(facet((center + q * Vector3(0, 0, z), point(radius, b, z), point(radius, a, z)) if bit == 1 else
-                                 (center + q * Vector3(0, 0, z), point(radius, a, z), point(radius, b, z)), **kw))
+                ret.append(facet((axisPoint, point(radius, a, z), point(radius, b, z)), **kw))
+        if wallMask & 4:
+            ret += _quad(point(radius, b, h), point(radius, b, -h), point(radius, a, -h), point(radius, a, h), **kw)
     if closeGap and angleRange is not None:  # close the open sector with two radial planes
-        for a in (a0, a1):
-            ret += _quad(center + q * Vector3(0, 0, -h), point(radius, a, -h), point(radius, a, h), center + q * Vector3(0, 0, h), **kw)
+        ret.append(facet((axisBottom, point(radius, a0, h), point(radius, a0, -h)), **kw))
+        ret.append(facet((axisBottom, axisTop, point(radius, a0, h)), **kw))
+        ret.append(facet((axisBottom, point(radius, a1, -h), axisTop), **kw))
+        ret.append(facet((axisTop, point(radius, a1, -h), point(radius, a1, h)), **kw))
     return ret
