@@ -1,4 +1,6 @@
 #include <core/SceneIO.hpp>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <unordered_map>
@@ -16,8 +18,15 @@ std::string fmt(Real x) {
 Real parseReal(const std::string& s) {
     char* end = nullptr;
     const Real x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str()) throw FormatError("expected a number, found '" + s.substr(0, 40) + "'");
+    while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+    if (end == s.c_str() || *end != '\0') throw FormatError("expected a number, found '" + s.substr(0, 40) + "'");
     return x;
+}
+
+long long parseInt(const std::string& s) {
+    const Real x = parseReal(s);
+    if (x != std::floor(x) || std::abs(x) > 9e15) throw FormatError("expected an integer, found '" + s.substr(0, 40) + "'");
+    return (long long)x;
 }
 
 // Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
@@ -25,7 +34,7 @@ std::vector<Real> numbers(const std::string& text, long n, const std::string& wh
     std::vector<Real> r;
     std::istringstream in(text);
     std::string tok;
-    while (in >> tok) r.push_back(parseReal(tok));
+    while (in >> tok) r.push_back(parseReal(tok));  // each token must be a whole number
     if (n >= 0 && (long)r.size() != n)
         throw FormatError(what + ": expected " + std::to_string(n) + " numbers, found " + std::to_string(r.size()));
     return r;
@@ -141,9 +150,9 @@ private:
             std::copy(x.begin(), x.end(), dst);
         };
         switch (a.kind) {
-            case AttrKind::Bool: *static_cast<bool*>(p) = parseReal(v.text) != 0; break;
-            case AttrKind::Int: *static_cast<int*>(p) = (int)parseReal(v.text); break;
-            case AttrKind::Long: *static_cast<long long*>(p) = std::stoll(v.text); break;
+            case AttrKind::Bool: *static_cast<bool*>(p) = parseInt(v.text) != 0; break;
+            case AttrKind::Int: *static_cast<int*>(p) = (int)parseInt(v.text); break;
+            case AttrKind::Long: *static_cast<long long*>(p) = parseInt(v.text); break;
             case AttrKind::Real: *static_cast<Real*>(p) = parseReal(v.text); break;
             case AttrKind::String: *static_cast<std::string*>(p) = v.text; break;
             case AttrKind::Vector2r: fill(static_cast<Vector2r*>(p)->data(), 2); break;
@@ -164,7 +173,10 @@ private:
             case AttrKind::IntVector: {
                 auto& dst = *static_cast<std::vector<int>*>(p);
                 dst.clear();
-                for (Real x : numbers(v.text, -1, where)) dst.push_back((int)x);
+                for (Real x : numbers(v.text, -1, where)) {
+                    if (x != std::floor(x)) throw FormatError(where + ": expected integers");
+                    dst.push_back((int)x);
+                }
                 break;
             }
             case AttrKind::RealVector: *static_cast<std::vector<Real>*>(p) = numbers(v.text, -1, where); break;

@@ -4,9 +4,13 @@ Terms (a term appears in O.energy once something has added to it):
   kinetic         instantaneous, NewtonIntegrator, ½m·v_n² + ½ω_n·I·ω_n with the on-step velocity
                   estimate v_n = v_{n-1/2} + a_n·dt/2 (the velocity consistent with the positions x_n)
   gravWork        cumulative, NewtonIntegrator.gravity / GravityEngine: -m·g·(x_n - x_{n-1}) summed
+                  (NewtonIntegrator adds it for every dynamic body, 0 without gravity, as Yade does)
   nonviscDamp     cumulative, NewtonIntegrator when damping != 0
   elastPotential  instantaneous, Law2_ScGeom_FrictPhys_CundallStrack: ½(Fn²/kn + Fs²/ks)
-  plastDissip     cumulative, the same law: Fs·(plastic slip) when the Coulomb limit is hit
+  plastDissip     cumulative, the same law: Fs·(plastic slip) when the Coulomb limit is hit and
+                  something is dissipated (never for frictionless contacts, as in Yade)
+The terms after step n describe the configuration that step computed forces for (x_{n-1} in
+O.bodies' numbering: pos - vel·dt), as elastPotential does.
 
 With every force of the scene accounted for, O.energy.total() is constant up to the error of
 the time integration. That error is what the bounds below are about; each is derived or

@@ -247,11 +247,6 @@ def test_time_step_above_critical_stops_the_run(factor):
     assert kineticEnergy() < 1e3  # nothing blew up (the body weighs 10.9 kg)
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: NewtonIntegrator::action (pkg/dem/NewtonIntegrator.cpp) compares "
-                   "O.dt with the critical step only after the integration loop has already written the "
-                   "bodies' positions/velocities with the rejected O.dt; O.iter and O.time are not advanced, "
-                   "so after the StabilityError the scene holds the state of a step that officially never "
-                   "happened (at 1e6 x crit the body is thrown 1.1e7 m away)")
 def test_time_step_rejection_leaves_the_bodies_before_the_rejected_step():
     m, kn, ks, d, crit = resting_sphere(amp=0.5)
     O.dt = 0.5 * crit
@@ -341,7 +336,7 @@ def test_huge_force_stops_the_run_with_the_last_finite_state():
     O.run(10, True)
     pos0, vel0 = Vector3(O.bodies[0].state.pos), Vector3(O.bodies[0].state.vel)
     pos1 = Vector3(O.bodies[1].state.pos)
-    assert pos0 == Vector3(0, 1e-3, 0) or pos0[1] == pytest.approx(1e-3, rel=1e-12)
+    assert pos0[0] == 0 and pos0[2] == 0 and pos0[1] == pytest.approx(1e-3, rel=1e-12)
     O.forces.addF(0, (1e308, 0, 0), permanent=True)
     with pytest.raises(StabilityError) as ei:
         O.run(10, True)
@@ -369,10 +364,6 @@ def test_stability_error_is_exported_and_a_runtime_error():
     assert issubclass(StabilityError, RuntimeError)
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: NewtonIntegrator::action (pkg/dem/NewtonIntegrator.cpp) adds the "
-                   "energy terms (kinetic, gravWork, nonviscDamp) of a body before the non-finite check, so "
-                   "the rejected body's infinite acceleration makes O.energy['kinetic'] inf and, with damping, "
-                   "O.energy['nonviscDamp'] and O.energy.total() NaN: NaN reaches Python")
 def test_energy_stays_finite_after_a_non_finite_rejection():
     light_pair()
     O.engines = engines(damping=0.2, gravity=(0, 0, -G))
@@ -386,10 +377,6 @@ def test_energy_stays_finite_after_a_non_finite_rejection():
     assert math.isfinite(O.energy.total())
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: the guard in NewtonIntegrator::action (pkg/dem/NewtonIntegrator.cpp) "
-                   "checks pos, vel and angVel only; a finite angular velocity above ~1.3e154 rad/s makes "
-                   "angVel.norm() overflow to inf, AngleAxisr(inf, 0-vector) gives a NaN quaternion that is "
-                   "written to State.ori without StabilityError")
 def test_huge_finite_angular_velocity_does_not_put_nan_in_the_orientation():
     mat(young=1e7, density=1000)
     O.bodies.append(sphere((0, 0, 0), 0.01))
@@ -410,8 +397,7 @@ def test_huge_finite_angular_velocity_does_not_put_nan_in_the_orientation():
 def test_spheres_placed_overlapping_fly_apart_stably(overlap):
     """Two free spheres overlapping by 80% (180%) of the radius with O.dt = 0.5 x crit: no
     StabilityError (the linear law has no problem with a large overlap); they separate with the
-    stored elastic energy ½kn·δ² as kinetic energy (measured +0.28% at 80%, exact at 180%: the
-    leapfrog's first kick is a full a·dt)."""
+    stored elastic energy ½kn·δ² as kinetic energy (measured ratio 1.00000 for both)."""
     mat(young=E, density=RHO)
     O.bodies.append(sphere((0, 0, 0), R))
     O.bodies.append(sphere(((2 - overlap) * R, 0, 0), R))
@@ -481,8 +467,9 @@ def test_stiff_100_m_per_s_impact(target):
     assert vx > 0  # it rebounded
     assert math.hypot(vx, vy, vz) <= 100 * (1 + 1e-3)
     assert vx > 99  # elastic (damping 0): measured 99.82 m/s
-    # max overlap of an elastic impact: v·sqrt(m/kn) = 1.04 mm (0.1% of... 1% of r); measured within 6%
-    assert res['maxov'] == pytest.approx(res['theory'], rel=0.1)
+    # max overlap of an elastic impact: v·sqrt(m/kn) = 1.04 mm (1% of r); measured 0.11% below, the
+    # peak falling between two of the ~21 steps of the contact
+    assert res['maxov'] == pytest.approx(res['theory'], rel=5e-3)
 
 
 @pytest.mark.parametrize('mode', ['radius', 'density'])
@@ -545,9 +532,6 @@ def test_tiny_and_huge_particles_settle_on_a_wall(r, young):
     assert res['ke'] < 1e-6 * res['epot']  # settled
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: Int attributes ignore Attr::positive (py/wrapper/Attributes.cpp, "
-                   "setAttr, case AttrKind::Int); GlobalStiffnessTimeStepper.timeStepUpdateInterval=0 is accepted "
-                   "and GlobalStiffnessTimeStepper::isActivated then evaluates iter % 0: SIGFPE kills the process")
 def test_time_step_update_interval_zero_is_refused_and_never_crashes():
     res = run_isolated('''
         O.materials.append(FrictMat(young=1e7, density=2600))
@@ -718,7 +702,7 @@ def test_stiff_scene_with_time_stepper_never_trips_the_guard():
             else O.dt == pytest.approx(0.8 * PWaveTimeStep(), rel=1e-12)
     assert O.iter == 5000
     assert all_states_finite()
-    assert maxContacts >= 40  # measured 56
+    assert maxContacts >= 40  # measured 71
     assert max(b.state.pos[2] for b in O.bodies) < 5
     print('stiff scene: dt in [%.3g, %.3g], max contacts %d' % (min(dts), max(dts), maxContacts))
 

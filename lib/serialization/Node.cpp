@@ -1,5 +1,6 @@
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <lib/serialization/Node.hpp>
 
@@ -7,6 +8,19 @@ namespace yade {
 
 static const char binaryMagic[] = "YADE-CLONE-BINARY\n";
 static const char xmlMagic[] = "<?xml";
+
+std::string FormatError::printable(const std::string& s) {
+    std::string r;
+    for (unsigned char c : s) {
+        if (c >= 32 && c < 127) r += static_cast<char>(c);
+        else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            r += buf;
+        }
+    }
+    return r;
+}
 
 const std::string& Node::attr(const std::string& name) const {
     auto it = attrs.find(name);
@@ -101,7 +115,8 @@ struct XmlParser {
         if (pos == start) fail("expected a name");
         return s.substr(start, pos - start);
     }
-    Node element() {
+    Node element(int depth = 0) {
+        if (depth > NodeIO::maxDepth) fail("nesting too deep");
         skipSpace();
         if (pos >= s.size() || s[pos] != '<') fail("expected '<'");
         ++pos;
@@ -140,7 +155,7 @@ struct XmlParser {
                 if (!n.children.empty()) n.text.clear(); // indentation between children
                 return n;
             }
-            n.children.push_back(element());
+            n.children.push_back(element(depth + 1));
         }
     }
 };
@@ -191,7 +206,7 @@ struct BinaryReader {
         return r;
     }
     Node node(int depth) {
-        if (depth > 64) throw FormatError("corrupt file (nesting too deep)");
+        if (depth > NodeIO::maxDepth) throw FormatError("corrupt file (nesting too deep)");
         Node n(string());
         const uint64_t na = size();
         if (na > s.size()) throw FormatError("corrupt file (impossible attribute count)");

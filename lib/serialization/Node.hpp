@@ -27,7 +27,9 @@ struct Node {
 
 // A file that cannot be read: truncated, corrupt, or not a saved scene.
 struct FormatError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    // Bytes quoted from a corrupt file may be anything: keep the message printable ASCII.
+    explicit FormatError(const std::string& message) : std::runtime_error(printable(message)) {}
+    static std::string printable(const std::string& s);
 };
 
 namespace NodeIO {
@@ -36,6 +38,7 @@ namespace NodeIO {
     std::string toBinary(const Node& root);
     // Detects the encoding from the first bytes; throws FormatError with the reason.
     Node parse(const std::string& data);
+    constexpr int maxDepth = 64; // deeper nesting is refused as corrupt (scenes need about 8)
 } // namespace NodeIO
 
 } // namespace yade

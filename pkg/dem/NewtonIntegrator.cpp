@@ -26,6 +26,14 @@ void NewtonIntegrator::action() {
         gravId = s.energy.term("gravWork", true);
         dampId = s.energy.term("nonviscDamp", true);
     }
+    // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
+    // changed, otherwise only the bodies that got a new contact in this step (cheap).
+    if (stabilityCheckPeriod > 0) {
+        const bool full = s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt;
+        const CriticalStep crit = full ? criticalTimeStep(s) : criticalTimeStep(s, s.newContactBodies);
+        lastCheckedDt = dt;
+        if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
+    }
     const long n = (long)s.bodies.size();
     Real maxV2 = 0;
     long diverged = -1; // a body whose new state is not finite (not written)
@@ -36,6 +44,7 @@ void NewtonIntegrator::action() {
         if (mask != -1 && !(b->mask & mask)) continue; // bodies outside the mask are not moved
         State& st = *b->state;
         Vector3r vel = st.vel, angVel = st.angVel;
+        Real eGrav = 0, eKin = 0, eDamp = 0; // energy terms, added once the new state is known finite
         if (b->isDynamic()) {
             Vector3r accel = accelOf(s.forces.getForce((int)id), Vector3r::Constant(st.mass), st.blockedDOFsMask, 0);
             const Vector3r g = accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0);
@@ -47,16 +56,17 @@ void NewtonIntegrator::action() {
             const Vector3r angUndamped = angAccel;
             if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel);
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                s.energy.add(gravId, -st.mass * g.dot(st.vel) * dt); // the move x_{n-1} -> x_n
                 const Vector3r v = st.vel + 0.5 * dt * accel, w = st.angVel + 0.5 * dt * angAccel;
-                s.energy.add(kinId, 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w)));
-                if (damping != 0) s.energy.add(dampId, -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w))));
+                eGrav = -st.mass * g.dot(st.vel) * dt; // the move x_{n-1} -> x_n
+                eKin = 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w));
+                eDamp = -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w)));
             }
             vel += dt * accel;
             angVel += dt * angAccel;
         }
         const Vector3r pos = st.pos + vel * dt;
-        if (!std::isfinite(pos.sum() + vel.sum() + angVel.sum())) { // stability guard: keep the last finite state
+        const Real angle = angVel.norm() * dt;
+        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
             continue;
@@ -64,8 +74,12 @@ void NewtonIntegrator::action() {
         st.vel = vel;
         st.angVel = angVel;
         st.pos = pos;
+        if (energy && b->isDynamic()) {
+            s.energy.add(gravId, eGrav);
+            s.energy.add(kinId, eKin);
+            if (damping != 0) s.energy.add(dampId, eDamp);
+        }
         maxV2 = std::max(maxV2, vel.squaredNorm());
-        const Real angle = angVel.norm() * dt;
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt
             st.ori = Quaternionr(AngleAxisr(angle, angVel / angVel.norm())) * st.ori;
             st.ori.normalize();
@@ -73,14 +87,6 @@ void NewtonIntegrator::action() {
     }
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
-    // The time step against the contacts' critical step: all contacts periodically and when O.dt
-    // changed, otherwise only the bodies that got a new contact in this step (cheap).
-    if (stabilityCheckPeriod > 0) {
-        const bool full = s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt;
-        const CriticalStep crit = full ? criticalTimeStep(s) : criticalTimeStep(s, s.newContactBodies);
-        lastCheckedDt = dt;
-        if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
-    }
 }
 
 std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std::string& what) const {

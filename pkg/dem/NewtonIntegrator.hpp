@@ -22,7 +22,7 @@ public:
     bool dampGravity = true;
     Real maxVelocitySq = NaN;
     int mask = -1;
-    int stabilityCheckPeriod = 10;
+    int stabilityCheckPeriod = 100;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("damping", damping, "Numerical damping coefficient λd of (3.5.12), in [0,1)", Attr::nonNegative);
@@ -31,7 +31,7 @@ public:
         v.attr("maxVelocitySq", maxVelocitySq, "Largest squared velocity in the last step [m²/s²]", Attr::readonly | Attr::noSave);
         v.attr("mask", mask, "Only bodies with (body.mask & mask) != 0 are moved (-1: all)");
         v.attr("stabilityCheckPeriod", stabilityCheckPeriod,
-                "Every this many steps, stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
+                "Every this many steps (and when O.dt changes, and for bodies with a new contact every step), stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
     }
     void action() override;
 

@@ -105,7 +105,36 @@ template <class M> static void setMatrixLike(void* p, py::handle v, const std::s
     *static_cast<M*>(p) = m;
 }
 
+// A copy of the current value (not a view), to put back if the new one is refused.
+static py::object copyOf(Serializable& s, const AttrInfo& a) {
+    void* p = a.address(s);
+    switch (a.kind) {
+        case AttrKind::Vector2r: return py::cast(Vector2r(*static_cast<Vector2r*>(p)));
+        case AttrKind::Vector2i: return py::cast(Vector2i(*static_cast<Vector2i*>(p)));
+        case AttrKind::Vector3r: return py::cast(Vector3r(*static_cast<Vector3r*>(p)));
+        case AttrKind::Vector3i: return py::cast(Vector3i(*static_cast<Vector3i*>(p)));
+        case AttrKind::Vector6r: return py::cast(Vector6r(*static_cast<Vector6r*>(p)));
+        case AttrKind::Matrix3r: return py::cast(Matrix3r(*static_cast<Matrix3r*>(p)));
+        case AttrKind::Quaternionr: return py::cast(Quaternionr(*static_cast<Quaternionr*>(p)));
+        default: return getAttr(s, a, py::none());
+    }
+}
+
+static void assign(Serializable& s, const AttrInfo& a, py::handle v);
+
 void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
+    py::object old = copyOf(s, a);
+    assign(s, a, v);
+    try {
+        s.postLoad(); // may refuse the combination (Wall.axis=5, a degenerate Facet)
+    } catch (...) {
+        assign(s, a, old); // leave the object as it was
+        s.postLoad();
+        throw;
+    }
+}
+
+static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
     const std::string where = classInfoOf(s).name + "." + a.name;
     if (a.has(Attr::readonly)) throw py::attribute_error(where + " is read-only");
     void* p = a.address(s);
@@ -121,13 +150,19 @@ void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
             const long long x = castOr<long long>(v, where, expected);
             if (x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
                 throw py::value_error(where + ": " + std::to_string(x) + " is out of the range of a 32-bit int");
+            const Real xr = (Real)x;
+            checkValue(where, a, &xr, 1);
             *static_cast<int*>(p) = (int)x;
             break;
         }
-        case AttrKind::Long:
+        case AttrKind::Long: {
             if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");
-            *static_cast<long long*>(p) = castOr<long long>(v, where, expected);
+            const long long x = castOr<long long>(v, where, expected);
+            const Real xr = (Real)x;
+            checkValue(where, a, &xr, 1);
+            *static_cast<long long*>(p) = x;
             break;
+        }
         case AttrKind::Real: {
             if (py::isinstance<py::str>(v) || py::isinstance<py::bool_>(v))
                 throw py::type_error(where + ": expected float, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
@@ -191,7 +226,6 @@ void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
             break;
         }
     }
-    s.postLoad();
 }
 
 void defineAttrProperties(py::handle cls, const ClassInfo& info) {

@@ -229,6 +229,17 @@ struct EnergyProxy {
 };
 
 struct OmegaProxy {};
+
+// Saves the current scene between two steps: directly from inside the loop (a PyRunner making a
+// checkpoint), otherwise by stopping a running loop and starting it again afterwards.
+std::string saveCurrentScene(bool xml) {
+    Omega& o = omega();
+    if (o.inLoopThread() || !o.isRunning()) return SceneIO::save(o.scene(), xml);
+    o.pause();
+    std::string data = SceneIO::save(o.scene(), xml);
+    o.run(-1);
+    return data;
+}
 } // namespace
 
 void bindOmega(py::module_& m) {
@@ -333,8 +344,7 @@ void bindOmega(py::module_& m) {
                 std::string data;
                 {
                     py::gil_scoped_release nogil;
-                    omega().pause();
-                    data = SceneIO::save(omega().scene(), xml);
+                    data = saveCurrentScene(xml);
                 }
                 return py::bytes(data);
             }, py::arg("xml") = false, "The scene as a saved file's content (binary or XML)")
@@ -350,12 +360,12 @@ void bindOmega(py::module_& m) {
             }, "Replace the scene by one read from a saved file's content")
             .def("saveTmp", [](OmegaProxy&, const std::string& slot) {
                 py::gil_scoped_release nogil;
-                omega().pause();
-                omega().tmpSlots[slot] = SceneIO::save(omega().scene(), false);
+                omega().tmpSlots[slot] = saveCurrentScene(false);
             }, py::arg("mark") = "", "Save the scene in memory under a slot name")
             .def("loadTmp", [](OmegaProxy&, const std::string& slot) {
                 auto it = omega().tmpSlots.find(slot);
-                if (it == omega().tmpSlots.end()) throw py::key_error("No memory-saved simulation named '" + slot + "' (O.saveTmp first)");
+                if (it == omega().tmpSlots.end())
+                    throw std::runtime_error("Cannot load nonexistent memory-saved simulation :memory:" + slot + " (O.saveTmp first)");
                 std::shared_ptr<Scene> loaded;
                 {
                     py::gil_scoped_release nogil;

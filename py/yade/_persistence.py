@@ -18,14 +18,14 @@ def _compress(fileName, data):
     return data
 
 
-def _decompress(fileName, data):
+def _decompress(data):
     try:
         if data[:2] == b'\x1f\x8b':
             return gzip.decompress(data)
         if data[:3] == b'BZh':
             return bz2.decompress(data)
-    except (OSError, EOFError, ValueError) as e:
-        raise FileFormatError('%s: corrupt or truncated compressed file (%s)' % (fileName, e))
+    except Exception as e:  # OSError, EOFError, zlib.error...: all mean a damaged file
+        raise FileFormatError('corrupt or truncated compressed file (%s: %s)' % (type(e).__name__, e))
     return data
 
 
@@ -40,6 +40,9 @@ def save(self, fileName, quiet=False):
     try:
         with os.fdopen(fd, 'wb') as f:
             f.write(data)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private; give the usual permissions
         os.replace(tmp, fileName)
     except BaseException:
         if os.path.exists(tmp):
@@ -55,7 +58,7 @@ def load(self, fileName, quiet=False):
     with open(fileName, 'rb') as f:
         data = f.read()
     try:
-        self._fromBytes(_decompress(fileName, data))
+        self._fromBytes(_decompress(data))
     except FileFormatError as e:
         raise FileFormatError('%s: %s' % (fileName, e)) from None
     _lastFile[0] = fileName

@@ -81,8 +81,25 @@ def load1():
         return None
 
 
+def build_stamp():
+    """Identify the build the local runs use (the extension module's mtime and size), to notice a
+    rebuild in the middle of a benchmark."""
+    bdir = os.path.abspath(os.environ.get("YADE_BUILD_DIR") or os.path.join(REPO, "build"))
+    try:
+        mods = sorted(f for f in os.listdir(os.path.join(bdir, "yade")) if f.startswith("_yade") and f.endswith(".so"))
+        st = os.stat(os.path.join(bdir, "yade", mods[0]))
+        return "%s %d" % (datetime.datetime.fromtimestamp(st.st_mtime).strftime("%Y-%m-%d %H:%M:%S"), st.st_size)
+    except (OSError, IndexError):
+        return None
+
+
 def reference_binary():
-    return shutil.which("yade")
+    """The first 'yade' on PATH that is not this repository's launcher."""
+    for d in os.environ.get("PATH", "").split(os.pathsep):
+        cand = shutil.which("yade", path=d or ".")
+        if cand and os.path.realpath(cand) != os.path.realpath(LAUNCHER):
+            return cand
+    return None
 
 
 def here_version():
@@ -191,7 +208,7 @@ def plan(args, engines):
 def run_all(args, engines, ref_bin, log=print):
     rounds = plan(args, engines)
     total = sum(len(r) for r in rounds)
-    results = {}          # key -> list over repeats (None for a failed run)
+    results = {}          # key -> list over repeats of run_one()'s dicts (failed ones have ok False)
     k = 0
     for rep, keys in enumerate(rounds):
         for key in keys:
@@ -206,6 +223,8 @@ def run_all(args, engines, ref_bin, log=print):
                 time.sleep(5)
                 r = run_one(cmd, args.memory, args.timeout, args.scene)
             r["repeat"] = rep
+            if e == "here":
+                r["build"] = build_stamp()
             results.setdefault(key, []).append(r)
             if r["ok"]:
                 log("  [%*d/%d] %-4s j%d N=%-6d %-8s %9.1f iter/s  %9.3g particle-steps/s%s  (%.1f s, load %s)"
@@ -307,9 +326,11 @@ def summarize(args, engines, results):
                             "ratio_variant_plain": rr, "paired": pr,
                             "cost_percent": median([100. * (1. / x - 1.) for x in pr]) if pr else None,
                         })
+    builds = sorted({r.get("build") for (e, _, _, _), rs in results.items() if e == "here" for r in rs
+                     if r.get("build")})
     loads = [r["load1"] for rs in results.values() for r in rs if r.get("load1") is not None]
     return {"load1_min": min(loads) if loads else None, "load1_max": max(loads) if loads else None,
-            "rows": rows, "ratios": ratios, "scaling": scaling, "marginal_memory": marginal,
+            "builds": builds, "rows": rows, "ratios": ratios, "scaling": scaling, "marginal_memory": marginal,
             "features": features}
 
 
@@ -337,6 +358,10 @@ def print_report(args, engines, summary, out=print):
             % ("/".join("%.2f" % r["timed_s"] for r in short),
                "/".join("%.0f%%" % (100. * .04 / r["timed_s"]) for r in short)))
         out("      (use more --steps for a timed phase of several seconds)")
+    if len(summary.get("builds", [])) > 1:
+        out("WARNING: the local build changed during the runs (%d different builds: %s): the local"
+            % (len(summary["builds"]), ", ".join(summary["builds"])))
+        out("         figures mix them; rerun when the build is stable")
     cpus = os.cpu_count() or 1
     if summary.get("load1_max") is not None:
         out("load average (1 min) during the runs: %.1f - %.1f on %d CPUs%s"
@@ -433,7 +458,7 @@ def main(argv=None):
     print("deposition benchmark, %s" % datetime.datetime.now().strftime("%Y-%m-%d %H:%M:%S"))
     print("machine: %s, %d CPUs (%s); python %s" % (platform.node(), os.cpu_count() or 0, cpu_model(),
                                                    platform.python_version()))
-    print("here:      %s (git %s)" % (LAUNCHER, here_version()))
+    print("here:      %s (git %s; build %s)" % (LAUNCHER, here_version(), build_stamp()))
     print("reference: %s" % (ref_bin or ("not run (--no-reference)" if args.no_reference else "not installed ('yade' not on PATH)")))
     print("scene: %s  sizes %s, threads %s, steps %d, settle %d, repeats %d%s%s"
           % (args.scene, ",".join(map(str, args.sizes)), ",".join(map(str, args.threads)), args.steps,
