@@ -12,7 +12,6 @@ public:
     using id_t = int;
     id_t id = -1;
     int mask = 1; // bodies collide only when (mask1 & mask2) != 0
-    bool dynamic = true;
     int clumpId = -1;
     std::shared_ptr<Shape> shape;
     std::shared_ptr<Material> material;
@@ -22,16 +21,18 @@ public:
         Serializable::visit(v);
         v.attr("id", id, "Index in O.bodies (-1 while not appended)", Attr::readonly);
         v.attr("mask", mask, "Collision mask: two bodies may interact only if (mask1 & mask2) != 0");
-        v.attr("dynamic", dynamic, "Whether forces move this body (a non-dynamic body keeps its prescribed velocity)");
         v.attr("clumpId", clumpId, "Id of the clump this body belongs to (-1: none)", Attr::readonly);
         v.attr("shape", shape, "Geometry of the particle");
         v.attr("material", material, "Material (may be shared with other bodies)");
         v.attr("state", state, "Physical state (position, velocity...)");
         v.attr("bound", bound, "Bounding volume for collision detection (None: no collisions)");
     }
-    bool isDynamic() const { return dynamic; }
+    // A body is dynamic unless all six degrees of freedom are blocked (Body.dynamic in Python
+    // sets or clears State.blockedDOFs accordingly).
+    bool isDynamic() const { return state->blockedDOFsMask != State::DOF_ALL; }
+    void setDynamic(bool d) { state->blockedDOFsMask = d ? State::DOF_NONE : State::DOF_ALL; }
     // Two bodies may collide when their masks share a bit and at least one of them moves.
-    static bool mayCollide(const Body& a, const Body& b) { return (a.mask & b.mask) != 0 && a.id != b.id && (a.dynamic || b.dynamic); }
+    static bool mayCollide(const Body& a, const Body& b) { return (a.mask & b.mask) != 0 && a.id != b.id && (a.isDynamic() || b.isDynamic()); }
 };
 
 } // namespace yade

@@ -144,9 +144,12 @@ def test_realPeriod_runs_on_wall_clock_time(tmp_path):
     assert out['total'] >= 0.39  # 39 sleeps of 10 ms (iterations 1..39)
     assert 3 <= len(its) <= out['total'] / 0.05 + 1
     assert all(b - a >= 0.05 for a, b in zip(ts, ts[1:]))  # never before the period has passed
-    assert its[0] >= 4  # the first after 50 ms, i.e. after at least 5 sleeps started
+    # the first after 50 ms; then at the first step after each period (a step lasts 10 ms and
+    # a little more: about every 5 steps, fewer when the machine is loaded, never more than 5;
+    # the reference printed runs at 5, 10, 14, 19, ...)
+    assert its[0] >= 1 and ts[0] >= 0.05
     steps = [b - a for a, b in zip(its, its[1:])]
-    assert all(3 <= s <= 10 for s in steps)
+    assert all(1 <= s <= 5 for s in steps)
 
 
 def test_realPeriod_in_process_with_main_namespace():

@@ -54,7 +54,7 @@ void NewtonIntegrator::action() {
             if (!dampGravity) accel += g;
             Vector3r angAccel = accelOf(s.forces.getTorque((int)id), st.inertia, st.blockedDOFsMask, 3);
             const Vector3r angUndamped = angAccel;
-            if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel);
+            if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel, dt);
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
                 const Vector3r v = st.vel + 0.5 * dt * accel, w = st.angVel + 0.5 * dt * angAccel;
                 eGrav = -st.mass * g.dot(st.vel) * dt; // the move x_{n-1} -> x_n

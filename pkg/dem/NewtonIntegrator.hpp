@@ -43,10 +43,8 @@ private:
     void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const {
         for (int i = 0; i < 3; ++i) accel[i] *= 1 - damping * sign(accel[i] * (vel[i] + 0.5 * dt * accel[i]));
     }
-    // The same for rotations, with the mid-step angular velocity.
-    void dampRotation(Vector3r& angAccel, const Vector3r& angVel) const {
-        for (int i = 0; i < 3; ++i) angAccel[i] *= 1 - damping * sign(angAccel[i] * angVel[i]);
-    }
+    // The same for rotations.
+    void dampRotation(Vector3r& angAccel, const Vector3r& angVel, Real dt) const { dampTranslation(angAccel, angVel, dt); }
     static Real sign(Real x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 };
 

@@ -80,16 +80,16 @@ std::pair<Vector3r, Vector3r> Shop::aabbExtremaOfSpheres(const Scene& scene, boo
 Real Shop::spheresVolume(const Scene& scene, int mask) {
     Real v = 0;
     for (const auto& b : scene.bodies) {
-        if (!b || (mask != -1 && !(b->mask & mask))) continue;
+        if (!b || (mask > 0 && !(b->mask & mask))) continue;
         if (const Sphere* s = sphereOf(*b)) v += 4.0 / 3.0 * Mathr_PI * std::pow(s->radius, 3);
     }
     return v;
 }
 
-std::vector<int> Shop::sphereCoordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi) {
+std::vector<int> Shop::coordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi) {
     std::vector<int> counts;
     for (const auto& b : scene.bodies) {
-        if (!b || !b->isDynamic() || !sphereOf(*b)) continue;
+        if (!b) continue;
         const Vector3r& p = b->state->pos;
         if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
         int n = 0;

@@ -13,9 +13,9 @@ namespace Shop {
     Real kineticEnergy(const Scene& scene);
     // Box around all spheres (surfaces, or centers only).
     std::pair<Vector3r, Vector3r> aabbExtremaOfSpheres(const Scene& scene, bool centers);
-    // Total volume of the spheres whose mask shares a bit with `mask` (-1: all).
+    // Total volume of the spheres whose mask shares a bit with `mask` (0 or -1: all).
     Real spheresVolume(const Scene& scene, int mask);
-    // Number of real interactions of each dynamic sphere whose center is inside [lo, hi].
-    std::vector<int> sphereCoordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi);
+    // Number of real interactions of each body whose position is inside [lo, hi].
+    std::vector<int> coordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi);
 } // namespace Shop
 } // namespace yade

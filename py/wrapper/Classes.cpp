@@ -130,6 +130,8 @@ static void bindExtras(py::module_& m) {
             .def_property("mat", [](py::object self) { return self.attr("material"); },
                     [](py::object self, py::object v) { self.attr("material") = v; }, "Alias of material")
             .def("intrs", [](Body& b) { return bodyInteractions(b); }, "Interactions (real ones) of this body in O.interactions")
+            .def_property("dynamic", &Body::isDynamic, &Body::setDynamic,
+                    "Whether forces move this body; False blocks all its degrees of freedom (State.blockedDOFs='xyzXYZ') and it keeps its prescribed velocity")
             .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; });
 
     existing<Interaction, Serializable>()

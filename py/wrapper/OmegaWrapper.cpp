@@ -5,6 +5,7 @@
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
+#include <algorithm>
 #include <set>
 
 namespace py = pybind11;
@@ -22,7 +23,11 @@ py::list bodyInteractions(const Body& b) {
     py::list r;
     Scene& s = scene();
     if (b.id < 0 || !s.bodies.exists(b.id) || s.bodies[b.id].get() != &b) return r;
-    for (const auto& I : s.interactions.withBody(b.id))
+    auto intrs = s.interactions.withBody(b.id);
+    std::sort(intrs.begin(), intrs.end(), [&](const auto& x, const auto& y) { // by partner id, as in Yade
+        return (x->id1 == b.id ? x->id2 : x->id1) < (y->id1 == b.id ? y->id2 : y->id1);
+    });
+    for (const auto& I : intrs)
         if (I->isReal()) r.append(py::cast(I));
     return r;
 }

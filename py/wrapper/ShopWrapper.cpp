@@ -18,9 +18,9 @@ void bindShop(py::module_& m) {
     m.def("aabbExtremaOfSpheres", [](bool centers) { return Shop::aabbExtremaOfSpheres(omega().scene(), centers); },
             py::arg("centers") = false, "(min, max) corners of the box around all spheres");
     m.def("getSpheresVolume", [](int mask) { return Shop::spheresVolume(omega().scene(), mask); }, py::arg("mask") = -1,
-            "Total volume of spheres (with mask sharing a bit with `mask`; -1: all)");
-    m.def("sphereCoordinations", [](const Vector3r& lo, const Vector3r& hi) { return Shop::sphereCoordinations(omega().scene(), lo, hi); },
-            "Number of real interactions of each dynamic sphere with its center in [lo, hi]");
+            "Total volume of spheres (with mask sharing a bit with `mask`; 0 or -1: all)");
+    m.def("coordinations", [](const Vector3r& lo, const Vector3r& hi) { return Shop::coordinations(omega().scene(), lo, hi); },
+            "Number of real interactions of each body whose position is in [lo, hi]");
 }
 
 } // namespace yade

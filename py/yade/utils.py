@@ -135,10 +135,10 @@ def box(center, extents, orientation=Quaternion.Identity, dynamic=None, fixed=Fa
 
 def aabbExtrema(cutoff=0.0, centers=False):
     """Corners (min, max) of the box holding all spheres (their centers if centers=True),
-    shrunk by cutoff times its size on each side."""
+    with the fraction `cutoff` of its size removed (half on each side)."""
     from ._yade import aabbExtremaOfSpheres
     lo, hi = aabbExtremaOfSpheres(centers)
-    d = (hi - lo) * cutoff
+    d = (hi - lo) * (cutoff / 2.)
     return (lo + d, hi - d)
 
 
@@ -172,10 +172,14 @@ aabbWall = aabbWalls  # the name used in the manual's tutorial text
 
 
 def avgNumInteractions(cutoff=0.0, skipFree=False, considerClumps=False):
-    """Coordination number Z = 2C/N of the dynamic spheres whose centers lie in aabbExtrema(cutoff);
-    with skipFree, spheres with 0 or 1 contacts are left out: Z = (2C - N1)/(N - N0 - N1)."""
-    from ._yade import sphereCoordinations
-    counts = sphereCoordinations(*aabbExtrema(cutoff, centers=False))
+    """Coordination number Z = 2C/N. Without cutoff and skipFree: 2·(real interactions)/(bodies).
+    Otherwise over the bodies whose position lies in aabbExtrema(cutoff); with skipFree, bodies with
+    0 or 1 contacts are left out: Z = (2C - N1)/(N - N0 - N1)."""
+    if cutoff == 0 and not skipFree:
+        n = sum(1 for b in O.bodies)
+        return 2.0 * O.interactions.countReal() / n if n else float('nan')
+    from ._yade import coordinations
+    counts = coordinations(*aabbExtrema(cutoff, centers=False))
     if not counts:
         return float('nan')
     if not skipFree:
