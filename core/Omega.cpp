@@ -20,14 +20,18 @@ void Omega::requireStopped(const char* what) const {
 
 void Omega::loop() {
     Scene& s = scene();
+    endedByRequest = false;
+    bool reachedEnd = false;
     try {
         while (!stopRequested) {
             s.moveToNextTimeStep();
             if (s.iter == s.stopAtIter) {
                 s.stopAtIter = -1; // reached: a later O.run() runs until paused
+                reachedEnd = true;
                 break;
             }
         }
+        endedByRequest = !reachedEnd && stopRequested.load();
     } catch (...) {
         error = std::current_exception();
         if (!quiet) std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
@@ -55,6 +59,12 @@ void Omega::joinLoop() {
 void Omega::pause() {
     stopRequested = true;
     if (!inLoopThread()) joinLoop();
+}
+
+bool Omega::interrupt() {
+    if (!running) return false;
+    pause();
+    return endedByRequest && !error;
 }
 
 void Omega::wait() {

@@ -21,6 +21,8 @@ public:
     // quietError: the caller waits and re-raises, so do not also print the error.
     void run(long long nSteps = -1, bool quietError = false);
     void pause(); // stops after the current step; from the loop thread it only requests the stop
+    // Stops the loop if it runs; true if it was still running (not ended by itself) and so may be resumed.
+    bool interrupt();
     void wait();  // blocks until the loop stops; rethrows what stopped it
     void step();  // one step in the calling thread
     bool isRunning() const { return running; }
@@ -39,7 +41,7 @@ private:
     int current = 0;
     std::thread loopThread;
     std::thread::id loopThreadId;
-    std::atomic<bool> running{false}, stopRequested{false}, quiet{false};
+    std::atomic<bool> running{false}, stopRequested{false}, quiet{false}, endedByRequest{false};
     std::exception_ptr error;
     void loop();
     void joinLoop();

@@ -152,7 +152,19 @@ private:
         switch (a.kind) {
             case AttrKind::Bool: *static_cast<bool*>(p) = parseInt(v.text) != 0; break;
             case AttrKind::Int: *static_cast<int*>(p) = (int)parseInt(v.text); break;
-            case AttrKind::Long: *static_cast<long long*>(p) = parseInt(v.text); break;
+            case AttrKind::Long: {
+                size_t used = 0;
+                long long x = 0;
+                try {
+                    x = std::stoll(v.text, &used);
+                } catch (std::exception&) {
+                    throw FormatError(where + ": expected an integer, found '" + v.text.substr(0, 40) + "'");
+                }
+                if (v.text.find_first_not_of(" \t\n", used) != std::string::npos)
+                    throw FormatError(where + ": expected an integer, found '" + v.text.substr(0, 40) + "'");
+                *static_cast<long long*>(p) = x;
+                break;
+            }
             case AttrKind::Real: *static_cast<Real*>(p) = parseReal(v.text); break;
             case AttrKind::String: *static_cast<std::string*>(p) = v.text; break;
             case AttrKind::Vector2r: fill(static_cast<Vector2r*>(p)->data(), 2); break;
@@ -267,6 +279,7 @@ Node SceneIO::toNode(Scene& s) {
 std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
     if (root.tag != "yade") throw FormatError("not a saved scene (root element <" + root.tag + ">)");
     const int version = std::stoi(root.attr("formatVersion"));
+    if (version < 1) throw FormatError("invalid format version " + std::to_string(version));
     if (version > NodeIO::formatVersion)
         throw FormatError("the file was written in format version " + std::to_string(version) + " by a newer build; this build reads up to version "
                 + std::to_string(NodeIO::formatVersion));

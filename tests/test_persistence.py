@@ -1044,11 +1044,6 @@ def test_checkpointing_from_a_PyRunner_does_not_stop_the_run(tmp_path):
     assert O.iter == 90  # saved by the last PyRunner call (during step 91), as in the reference Yade
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: saveCurrentScene() in py/wrapper/OmegaWrapper.cpp pauses a running loop, saves "
-                   "and restarts it with omega().run(-1) unconditionally; when the step in progress during the pause was the "
-                   "last one of O.run(n) (the loop then sets stopAtIter=-1 and ends by itself), the restart runs without "
-                   "limit: O.run(2); O.save(f) leaves the simulation running past iteration 2 (and O.wait() never returns); "
-                   "the reference Yade stops at 2")
 def test_saving_during_the_last_step_of_a_run_does_not_restart_it(tmp_path):
     import time
     saved_scene()
@@ -1065,10 +1060,6 @@ def test_saving_during_the_last_step_of_a_run_does_not_restart_it(tmp_path):
         O.pause()
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: core/SceneIO.cpp Reader::readValue reads Long (long long) attributes through "
-                   "parseInt(), which goes through a double and refuses |x| > 9e15; the writer writes them exactly "
-                   "(std::to_string), so a scene with e.g. PyRunner.iterPeriod=10**16 or firstIterRun=2**53+1 saves but "
-                   "cannot be loaded ('expected an integer, found ...'); before, std::stoll read them exactly")
 @pytest.mark.parametrize('fileName', ['big.yade', 'big.xml'])
 def test_large_long_long_attributes_round_trip(tmp_path, fileName):
     O.engines = [PyRunner(command='pass', iterPeriod=10 ** 16, nDo=2 ** 62 + 1, firstIterRun=2 ** 53 + 1)]

@@ -239,10 +239,10 @@ struct OmegaProxy {};
 // checkpoint), otherwise by stopping a running loop and starting it again afterwards.
 std::string saveCurrentScene(bool xml) {
     Omega& o = omega();
-    if (o.inLoopThread() || !o.isRunning()) return SceneIO::save(o.scene(), xml);
-    o.pause();
+    if (o.inLoopThread()) return SceneIO::save(o.scene(), xml);
+    const bool resume = o.interrupt();
     std::string data = SceneIO::save(o.scene(), xml);
-    o.run(-1);
+    if (resume) o.run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
     return data;
 }
 } // namespace

@@ -8,6 +8,8 @@ import tempfile
 from ._yade import Omega, FileFormatError
 
 _lastFile = [None]
+_UMASK = os.umask(0)  # read once (os.umask can only be read by setting it)
+os.umask(_UMASK)
 
 
 def _compress(fileName, data):
@@ -40,9 +42,7 @@ def save(self, fileName, quiet=False):
     try:
         with os.fdopen(fd, 'wb') as f:
             f.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private; give the usual permissions
+        os.chmod(tmp, 0o666 & ~_UMASK)  # mkstemp makes it private; give the usual permissions
         os.replace(tmp, fileName)
     except BaseException:
         if os.path.exists(tmp):
