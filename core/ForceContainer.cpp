@@ -31,8 +31,10 @@ void ForceContainer::addPermTorque(int id, const Vector3r& t) {
 
 void ForceContainer::sync() {
     if (synced) return;
-    const size_t n = summedForce.size();
-    for (size_t i = 0; i < n; ++i) {
+    const long n = (long)summedForce.size();
+    // each body's sum is done in thread-buffer order, so the result does not depend on the split
+#pragma omp parallel for schedule(static) if (n > 2000)
+    for (long i = 0; i < n; ++i) {
         Vector3r f = force[0][i], t = torque[0][i];
         for (size_t th = 1; th < force.size(); ++th) {
             f += force[th][i];
@@ -49,7 +51,9 @@ void ForceContainer::sync() {
 }
 
 void ForceContainer::reset() {
-    for (size_t th = 0; th < force.size(); ++th) {
+    const long nThreads = (long)force.size();
+#pragma omp parallel for schedule(static) if (nThreads > 1)
+    for (long th = 0; th < nThreads; ++th) { // each thread clears its own buffer
         std::fill(force[th].begin(), force[th].end(), Vector3r::Zero());
         std::fill(torque[th].begin(), torque[th].end(), Vector3r::Zero());
     }
