@@ -11,7 +11,31 @@ Omega::Omega() {
 
 Omega::~Omega() {
     stopRequested = true;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        shutdown = true;
+    }
+    wake.notify_all();
     if (loopThread.joinable()) loopThread.join();
+}
+
+// One thread runs every O.run() of the session: OpenMP keeps one team of threads for it (a new
+// thread per run would leave the previous team spinning on the cores).
+void Omega::worker() {
+    for (;;) {
+        {
+            std::unique_lock<std::mutex> lock(mutex);
+            wake.wait(lock, [this] { return startRequested || shutdown; });
+            if (shutdown) return;
+            startRequested = false;
+        }
+        loop();
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            running = false;
+        }
+        stopped.notify_all();
+    }
 }
 
 void Omega::requireStopped(const char* what) const {
@@ -36,7 +60,6 @@ void Omega::loop() {
         error = std::current_exception();
         if (!quiet) std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
     }
-    running = false;
 }
 
 void Omega::run(long long nSteps, bool quietError) {
@@ -47,13 +70,22 @@ void Omega::run(long long nSteps, bool quietError) {
     error = nullptr;
     quiet = quietError;
     stopRequested = false;
-    running = true;
-    loopThread = std::thread([this] { loop(); });
-    loopThreadId = loopThread.get_id();
+    if (!loopThread.joinable()) {
+        loopThread = std::thread([this] { worker(); });
+        loopThreadId = loopThread.get_id();
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        running = true;
+        startRequested = true;
+    }
+    wake.notify_one();
 }
 
-void Omega::joinLoop() {
-    if (loopThread.joinable() && !inLoopThread()) loopThread.join();
+void Omega::joinLoop() { // waits until the current run has ended
+    if (inLoopThread()) return;
+    std::unique_lock<std::mutex> lock(mutex);
+    stopped.wait(lock, [this] { return !running; });
 }
 
 void Omega::pause() {

@@ -2,6 +2,7 @@
 #pragma once
 #include <core/Scene.hpp>
 #include <map>
+#include <mutex>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
@@ -43,6 +44,10 @@ private:
     std::thread::id loopThreadId;
     std::atomic<bool> running{false}, stopRequested{false}, quiet{false}, endedByRequest{false};
     std::exception_ptr error;
+    std::mutex mutex;
+    std::condition_variable wake, stopped;
+    bool startRequested = false, shutdown = false;
+    void worker();
     void loop();
     void joinLoop();
     void requireStopped(const char* what) const;

@@ -22,6 +22,7 @@ line, 1 when some failed (the table then shows what did run), 2 on bad usage.
 
 import argparse
 import datetime
+import hashlib
 import json
 import os
 import platform
@@ -82,13 +83,13 @@ def load1():
 
 
 def build_stamp():
-    """Identify the build the local runs use (the extension module's mtime and size), to notice a
-    rebuild in the middle of a benchmark."""
+    """Identify the build the local runs use (a hash of the extension module), to notice a rebuild
+    in the middle of a benchmark."""
     bdir = os.path.abspath(os.environ.get("YADE_BUILD_DIR") or os.path.join(REPO, "build"))
     try:
         mods = sorted(f for f in os.listdir(os.path.join(bdir, "yade")) if f.startswith("_yade") and f.endswith(".so"))
-        st = os.stat(os.path.join(bdir, "yade", mods[0]))
-        return "%s %d" % (datetime.datetime.fromtimestamp(st.st_mtime).strftime("%Y-%m-%d %H:%M:%S"), st.st_size)
+        with open(os.path.join(bdir, "yade", mods[0]), "rb") as f:
+            return hashlib.sha1(f.read()).hexdigest()[:12]
     except (OSError, IndexError):
         return None
 
@@ -316,15 +317,16 @@ def summarize(args, engines, results):
                 for e in engines:
                     for f, desc in FEATURES:
                         rs = [r for r in results.get((e, t, n, f), []) if r["ok"]]
-                        # cost = extra wall time per step = plain iter/s / variant iter/s - 1, per repeat
+                        # ratio of the medians (robust to one outlier in either set) and the
+                        # per-repeat ratios (show the spread); cost = extra wall time per step
                         pr = paired((e, t, n, f), (e, t, n, "plain"))
-                        rr = median(pr)
+                        vi, pi = median([r["iter_per_s"] for r in rs]), by[(e, t, n)]["iter_per_s"]
+                        rr = vi / pi if vi and pi else None
                         features.append({
                             "engine": e, "threads": t, "size": n, "feature": f, "description": desc,
-                            "runs": len(rs), "iter_per_s": median([r["iter_per_s"] for r in rs]),
-                            "plain_iter_per_s": by[(e, t, n)]["iter_per_s"],
-                            "ratio_variant_plain": rr, "paired": pr,
-                            "cost_percent": median([100. * (1. / x - 1.) for x in pr]) if pr else None,
+                            "runs": len(rs), "iter_per_s": vi, "plain_iter_per_s": pi,
+                            "ratio_variant_plain": rr, "paired": pr, "paired_median": median(pr),
+                            "cost_percent": 100. * (1. / rr - 1.) if rr else None,
                         })
     builds = sorted({r.get("build") for (e, _, _, _), rs in results.items() if e == "here" for r in rs
                      if r.get("build")})
@@ -392,14 +394,17 @@ def print_report(args, engines, summary, out=print):
                 m["engine"], m["threads"], m["size"], m["base_size"], m["kb_per_sphere"]))
     if summary["features"]:
         out("")
-        out("== feature costs (each variant vs the plain run of the same repeat; cost = extra time per step) ==")
-        out("%-6s %7s %7s %-9s %-46s %10s %10s %13s %9s"
-            % ("engine", "threads", "N", "feature", "what", "iter/s", "plain", "variant/plain", "cost %"))
+        out("== feature costs: each variant interleaved with the plain run in the same repeats; variant/plain =")
+        out("== ratio of median iter/s, cost = plain/variant - 1 (extra time per step); paired = per-repeat ratios ==")
+        out("%-6s %7s %7s %-9s %-46s %9s %9s %13s %8s  %s"
+            % ("engine", "threads", "N", "feature", "what", "iter/s", "plain", "variant/plain", "cost %",
+               "paired variant/plain"))
         for f in summary["features"]:
-            out("%-6s %7d %7d %-9s %-46s %10s %10s %13s %9s"
+            out("%-6s %7d %7d %-9s %-46s %9s %9s %13s %8s  [%s]"
                 % (f["engine"], f["threads"], f["size"], f["feature"], f["description"],
                    fmt(f["iter_per_s"], ".1f"), fmt(f["plain_iter_per_s"], ".1f"),
-                   fmt(f["ratio_variant_plain"], ".3f"), fmt(f["cost_percent"], "+.1f")))
+                   fmt(f["ratio_variant_plain"], ".3f"), fmt(f["cost_percent"], "+.1f"),
+                   " ".join("%.2f" % x for x in f["paired"])))
     out("")
     out("(timings vary by about ±25% between identical runs: compare ratios from one invocation)")
 
