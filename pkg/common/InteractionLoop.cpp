@@ -72,7 +72,7 @@ void InteractionLoop::action() {
     const Real reach = fastPath ? prepareQuickReject() : -1;
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static, 256) // interleaved chunks: balanced, and the same split every run
     for (long k = 0; k < n; ++k) {
         if (reach > 0 && !intrs.wasReal[k]) { // a potential pair of spheres still apart: nothing to do
             const SphereAt &a = spheres[intrs.pairIds[2 * k]], &b = spheres[intrs.pairIds[2 * k + 1]];
