@@ -96,6 +96,17 @@ template <class T, class Base> static py::class_<T, Base, std::shared_ptr<T>> ex
     return py::reinterpret_borrow<py::class_<T, Base, std::shared_ptr<T>>>(py::type::handle_of<T>());
 }
 
+static py::object functorObject(Functor* f) {
+    return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+}
+
+// D.dispFunctor(a, b): the functor a two-argument dispatcher would choose for these objects.
+template <class D, class A, class B> static void bindDispFunctor2D(const char* doc) {
+    existing<D, Dispatcher>().def("dispFunctor", [](D& d, std::shared_ptr<A> a, std::shared_ptr<B> b) {
+        return functorObject(a && b ? d.getFunctor(*a, *b).functor : nullptr);
+    }, doc);
+}
+
 // Members that are computed, not stored: derived properties and methods.
 static void bindExtras(py::module_& m) {
     auto serCls = py::reinterpret_borrow<py::class_<Serializable, std::shared_ptr<Serializable>>>(py::type::handle_of<Serializable>());
@@ -154,26 +165,12 @@ static void bindExtras(py::module_& m) {
     };
     ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<LawDispatcher&>(s), a, "LawDispatcher"); };
 
-    existing<BoundDispatcher, Dispatcher>()
-            .def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) -> py::object {
-                BoundFunctor* f = s ? d.getFunctor(*s) : nullptr;
-                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
-            }, "The functor that would handle this shape (None if none)");
-    existing<IGeomDispatcher, Dispatcher>()
-            .def("dispFunctor", [](IGeomDispatcher& d, std::shared_ptr<Shape> a, std::shared_ptr<Shape> b) -> py::object {
-                IGeomFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
-                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
-            }, "The functor that would handle this pair of shapes (None if none)");
-    existing<IPhysDispatcher, Dispatcher>()
-            .def("dispFunctor", [](IPhysDispatcher& d, std::shared_ptr<Material> a, std::shared_ptr<Material> b) -> py::object {
-                IPhysFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
-                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
-            }, "The functor that would handle this pair of materials (None if none)");
-    existing<LawDispatcher, Dispatcher>()
-            .def("dispFunctor", [](LawDispatcher& d, std::shared_ptr<IGeom> a, std::shared_ptr<IPhys> b) -> py::object {
-                LawFunctor* f = (a && b) ? d.getFunctor(*a, *b).functor : nullptr;
-                return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
-            }, "The functor that would handle this (IGeom, IPhys) pair (None if none)");
+    existing<BoundDispatcher, Dispatcher>().def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) {
+        return functorObject(s ? d.getFunctor(*s) : nullptr);
+    }, "The functor that would handle this shape (None if none)");
+    bindDispFunctor2D<IGeomDispatcher, Shape, Shape>("The functor that would handle this pair of shapes (None if none)");
+    bindDispFunctor2D<IPhysDispatcher, Material, Material>("The functor that would handle this pair of materials (None if none)");
+    bindDispFunctor2D<LawDispatcher, IGeom, IPhys>("The functor that would handle this (IGeom, IPhys) pair (None if none)");
 }
 
 void bindAllClasses(py::module_& m) {
