@@ -1,4 +1,5 @@
 #include <core/EnergyTracker.hpp>
+#include <algorithm>
 
 namespace yade {
 
@@ -20,6 +21,9 @@ void EnergyTracker::setThreads(int n) {
     sync();
     perThread.assign(n > 0 ? n : 1, std::vector<Real>(termNames.size(), 0));
     touchedThread.assign(perThread.size(), std::vector<char>(termNames.size(), 0));
+    // room for many terms: the threads' slots then lie in separate cache lines (no false sharing)
+    for (auto& t : perThread) t.reserve(std::max<size_t>(64, termNames.size()));
+    for (auto& t : touchedThread) t.reserve(std::max<size_t>(512, termNames.size()));
 }
 
 void EnergyTracker::sync() {

@@ -12,9 +12,12 @@ public:
     int ompThreads = -1;
     std::string label;
     Scene* scene = nullptr; // set by the scene before each call
+    long long execTime = 0, execCount = 0; // filled while O.timingEnabled
     template <class V> void visit(V& v) {
         Serializable::visit(v);
         v.attr("dead", dead, "If true, this engine is skipped");
+        v.attr("execTime", execTime, "Cumulative wall time of this engine's runs [ns] (counted while O.timingEnabled)", Attr::noSave);
+        v.attr("execCount", execCount, "Number of runs counted in execTime", Attr::noSave);
         v.attr("ompThreads", ompThreads, "Threads this engine may use (-1: all available)");
         v.attr("label", label, "Name under which the engine is reachable from Python scripts");
     }

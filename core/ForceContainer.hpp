@@ -16,8 +16,14 @@ public:
     int threads() const { return (int)force.size(); }
     void resize(size_t nBodies);
     size_t size() const { return summedForce.size(); }
-    void addForce(int id, const Vector3r& f) { force[thread()][id] += f; synced = false; }
-    void addTorque(int id, const Vector3r& t) { torque[thread()][id] += t; synced = false; }
+    void addForce(int id, const Vector3r& f) {
+        force[thread()][id] += f;
+        markUnsynced();
+    }
+    void addTorque(int id, const Vector3r& t) {
+        torque[thread()][id] += t;
+        markUnsynced();
+    }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);
@@ -26,10 +32,18 @@ public:
     const Vector3r& getPermForce(int id) const { return permForce[id]; }
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     void sync();
+    // The summed arrays (call sync() first), for loops over all bodies.
+    const Vector3r* forceData() const { return summedForce.data(); }
+    const Vector3r* torqueData() const { return summedTorque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
 
 private:
+    // Written only when set: threads adding forces in parallel then only read the flag, and its
+    // cache line is not passed back and forth between cores.
+    void markUnsynced() {
+        if (synced) synced = false;
+    }
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();

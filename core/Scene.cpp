@@ -17,6 +17,8 @@ static std::string nowString(const char* fmt) {
     return buf;
 }
 
+bool Scene::timingEnabled = false;
+
 Scene::Scene() {
     // id: unique per run (time, pid-like random suffix); d.id adds a description later.
     std::random_device rd;
@@ -80,7 +82,14 @@ void Scene::moveToNextTimeStep() {
     for (const auto& e : running) {
         e->scene = this;
         if (e->dead || !e->isActivated()) continue;
+        if (!timingEnabled) {
+            e->action();
+            continue;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
         e->action();
+        e->execTime += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+        ++e->execCount;
     }
     ++iter;
     time += dt;

@@ -23,6 +23,8 @@ public:
     Real dt = 1e-8;
     bool isPeriodic = false;
     bool trackEnergy = false;
+    // O.timingEnabled: engines accumulate execTime/execCount (one clock read per engine run).
+    static bool timingEnabled;
     std::map<std::string, std::string> tags;
     // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
     // the integrator's stability guard), cleared at the start of each step.

@@ -425,3 +425,28 @@ def test_bounds_of_a_background_run():
     O.run(5, True)
     for i in (0, 250, 499):
         assert vec(O.bodies[i].bound.min) == (i - .4, -.4, -.4)
+
+
+def test_timing_counts_each_engine_run_only_when_enabled():
+    import io
+    from yade import timing
+    O.bodies.append([sphere((0, 0, 0), .1), sphere((0, 0, .25), .1)])
+    import yade
+    O.engines = [ForceResetter(), yade.InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 yade.NewtonIntegrator(gravity=(0, 0, -10), label='newton')]
+    O.timingEnabled = False
+    O.run(5, True)
+    assert [e.execCount for e in O.engines] == [0, 0, 0] and [e.execTime for e in O.engines] == [0, 0, 0]
+    try:
+        O.timingEnabled = True
+        O.run(7, True)
+        assert [e.execCount for e in O.engines] == [7, 7, 7]
+        assert all(e.execTime > 0 for e in O.engines)
+        out = io.StringIO()
+        rows = timing.stats(out)
+        assert [r[0] for r in rows] == ['ForceResetter', 'InsertionSortCollider', 'newton']
+        assert 'TOTAL' in out.getvalue() and 'newton' in out.getvalue()
+        timing.reset()
+        assert [e.execCount for e in O.engines] == [0, 0, 0]
+    finally:
+        O.timingEnabled = False

@@ -54,7 +54,7 @@ def same_float(a, b):
     return struct.pack('<d', a) == struct.pack('<d', b)
 
 
-NOT_SAVED = {'realLast'}  # PeriodicEngine.realLast: wall-clock time, Attr::noSave by design
+NOT_SAVED = {'realLast', 'execTime', 'execCount'}  # wall-clock time and timing counters: Attr::noSave by design
 
 
 def differences(a, b, path='', seen=None):
@@ -391,7 +391,7 @@ def test_the_filler_changes_values():
     for cls in (State, FrictMat, NewtonIntegrator, PyRunner, yade.ScGeom, yade.FrictPhys, yade.Facet, yade.PartialEngine):
         filled, fresh = f.make(cls), cls()
         changed = {d.split(':')[0].lstrip('.').split('[')[0] for d in differences(filled, fresh)}
-        readonly = {'normal', 'area', 'realLast'}  # Facet: computed from vertices; realLast: wall clock
+        readonly = {'normal', 'area'} | NOT_SAVED  # Facet: computed from vertices; NOT_SAVED: wall clock, timing
         for k, v in fresh.dict().items():
             try:
                 setattr(fresh, k, v)

@@ -9,12 +9,16 @@ bool InsertionSortCollider::needsRun() const {
     const BodyContainer& bodies = scene->bodies;
     if (bodies.changes != lastBodyChanges) return true;
     const Real limit2 = sweep * sweep;
-    for (const auto& b : bodies) {
-        if (!b || !b->shape) continue;
-        if (!b->bound) continue; // bodies without a Bo1 functor take no part
-        if ((b->state->pos - b->bound->refPos).squaredNorm() > limit2) return true; // (3.1.6)
+    const long n = (long)bodies.size();
+    int moved = 0;
+    // split as in NewtonIntegrator, so that each thread reads the states it has just written
+#pragma omp parallel for schedule(static) reduction(| : moved)
+    for (long id = 0; id < n; ++id) {
+        const Body* b = bodies[(Body::id_t)id].get();
+        if (!b || !b->shape || !b->bound) continue; // bodies without a Bo1 functor take no part
+        moved |= (b->state->pos - b->bound->refPos).squaredNorm() > limit2; // (3.1.6)
     }
-    return false;
+    return moved != 0;
 }
 
 void InsertionSortCollider::updateBounds() {

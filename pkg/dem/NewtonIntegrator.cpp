@@ -15,6 +15,15 @@ static inline Vector3r accelOf(const Vector3r& f, const Vector3r& m, int blocked
     return a;
 }
 
+// Gravity without the blocked translations.
+static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
+    Vector3r a = g;
+    if (blocked)
+        for (int i = 0; i < 3; ++i)
+            if (blocked & (1 << i)) a[i] = 0;
+    return a;
+}
+
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     const Real dt = s.dt;
@@ -34,30 +43,40 @@ void NewtonIntegrator::action() {
         lastCheckedDt = dt;
         if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     }
+    // the members as constants, so that the compiler keeps them in registers across the stores below
     const long n = (long)s.bodies.size();
+    const Vector3r* forces = s.forces.forceData();
+    const Vector3r* torques = s.forces.torqueData();
+    const Vector3r g = gravity;
+    const Real lambda = damping;
+    const bool gravityDamped = dampGravity;
+    const int moveMask = mask;
     Real maxV2 = 0;
     long diverged = -1; // a body whose new state is not finite (not written)
 #pragma omp parallel for schedule(static) reduction(max : maxV2)
     for (long id = 0; id < n; ++id) {
-        const auto& b = s.bodies[(Body::id_t)id];
+        const Body* b = s.bodies[(Body::id_t)id].get();
         if (!b) continue;
-        if (mask != -1 && !(b->mask & mask)) continue; // bodies outside the mask are not moved
+        if (moveMask != -1 && !(b->mask & moveMask)) continue; // bodies outside the mask are not moved
         State& st = *b->state;
+        const int blocked = st.blockedDOFsMask;
+        const bool dynamic = blocked != State::DOF_ALL;
         Vector3r vel = st.vel, angVel = st.angVel;
         Real eGrav = 0, eKin = 0, eDamp = 0; // energy terms, added once the new state is known finite
-        if (b->isDynamic()) {
-            Vector3r accel = accelOf(s.forces.getForce((int)id), Vector3r::Constant(st.mass), st.blockedDOFsMask, 0);
-            const Vector3r g = accelOf(gravity, Vector3r::Ones(), st.blockedDOFsMask, 0);
-            if (dampGravity) accel += g;
+        if (dynamic) {
+            const bool damped = lambda != 0 && st.isDamped;
+            Vector3r accel = accelOf(forces[id], Vector3r::Constant(st.mass), blocked, 0);
+            const Vector3r gFree = freeGravity(g, blocked);
+            if (gravityDamped) accel += gFree;
             const Vector3r undamped = accel;
-            if (damping != 0 && st.isDamped) dampTranslation(accel, st.vel, dt);
-            if (!dampGravity) accel += g;
-            Vector3r angAccel = accelOf(s.forces.getTorque((int)id), st.inertia, st.blockedDOFsMask, 3);
+            if (damped) dampTranslation(accel, vel, dt);
+            if (!gravityDamped) accel += gFree;
+            Vector3r angAccel = accelOf(torques[id], st.inertia, blocked, 3);
             const Vector3r angUndamped = angAccel;
-            if (damping != 0 && st.isDamped) dampRotation(angAccel, st.angVel, dt);
+            if (damped) dampRotation(angAccel, angVel, dt);
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                const Vector3r v = st.vel + 0.5 * dt * accel, w = st.angVel + 0.5 * dt * angAccel;
-                eGrav = -st.mass * g.dot(st.vel) * dt; // the move x_{n-1} -> x_n
+                const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
+                eGrav = -st.mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
                 eKin = 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w));
                 eDamp = -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w)));
             }
@@ -65,7 +84,8 @@ void NewtonIntegrator::action() {
             angVel += dt * angAccel;
         }
         const Vector3r pos = st.pos + vel * dt;
-        const Real angle = angVel.norm() * dt;
+        const Real angVelNorm = angVel.norm();
+        const Real angle = angVelNorm * dt;
         if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
@@ -74,14 +94,14 @@ void NewtonIntegrator::action() {
         st.vel = vel;
         st.angVel = angVel;
         st.pos = pos;
-        if (energy && b->isDynamic()) {
+        if (energy && dynamic) {
             s.energy.add(gravId, eGrav);
             s.energy.add(kinId, eKin);
-            if (damping != 0) s.energy.add(dampId, eDamp);
+            if (lambda != 0) s.energy.add(dampId, eDamp);
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt
-            st.ori = Quaternionr(AngleAxisr(angle, angVel / angVel.norm())) * st.ori;
+            st.ori = Quaternionr(AngleAxisr(angle, angVel / angVelNorm)) * st.ori;
             st.ori.normalize();
         }
     }

@@ -308,6 +308,9 @@ void bindOmega(py::module_& m) {
             .def_property_readonly("energy", [](OmegaProxy&) { return EnergyProxy(); })
             .def_property("trackEnergy", [](OmegaProxy&) { return scene().trackEnergy; },
                     [](OmegaProxy&, bool v) { scene().trackEnergy = v; }, "Whether engines add to O.energy (off: no cost)")
+            .def_property("timingEnabled", [](OmegaProxy&) { return Scene::timingEnabled; },
+                    [](OmegaProxy&, bool v) { Scene::timingEnabled = v; },
+                    "Whether engines accumulate execTime/execCount (yade.timing.stats() prints them)")
             .def_property("engines", [](OmegaProxy&) { return scene().getEngines(); },
                     [](OmegaProxy&, py::object list) {
                         if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.engines must be a list of engines");
