@@ -51,12 +51,16 @@ void ForceContainer::sync() {
 }
 
 void ForceContainer::reset() {
-    const long nThreads = (long)force.size();
-#pragma omp parallel for schedule(static) if (nThreads > 1)
-    for (long th = 0; th < nThreads; ++th) { // each thread clears its own buffer
-        std::fill(force[th].begin(), force[th].end(), Vector3r::Zero());
-        std::fill(torque[th].begin(), torque[th].end(), Vector3r::Zero());
-    }
+    const long n = (long)summedForce.size();
+    const size_t nThreads = force.size();
+    // split by bodies as sync() and the integrator: each thread clears the entries it reads next
+    // (cache lines stay with one core; clearing whole per-thread buffers moved them between cores)
+#pragma omp parallel for schedule(static) if (nThreads > 1 && n > 2000)
+    for (long i = 0; i < n; ++i)
+        for (size_t th = 0; th < nThreads; ++th) {
+            force[th][i] = Vector3r::Zero();
+            torque[th][i] = Vector3r::Zero();
+        }
     synced = false;
 }
 

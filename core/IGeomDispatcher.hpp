@@ -13,8 +13,9 @@ public:
     // contact); creates or updates I.geom. shift2 is the periodic shift added to body 2.
     virtual bool go(const Shape& s1, const Shape& s2, const State& st1, const State& st2, const Vector3r& shift2,
             bool force, Interaction& I);
-    // For a functor of two spheres: a potential pair farther apart than this factor × (r1 + r2)
-    // cannot be in contact, so the interaction loop may skip it (negative: no such shortcut).
+    // A promise that lets the interaction loop skip a potential pair without calling go():
+    // two spheres farther apart than this factor × (r1 + r2), or a sphere whose center is farther
+    // than this factor × r from a facet's plane, are not in contact (negative: no such promise).
     virtual Real quickRejectFactor() const { return -1; }
 };
 

@@ -1,6 +1,7 @@
 #include <core/Scene.hpp>
 #include <lib/base/Logging.hpp>
 #include <pkg/common/InteractionLoop.hpp>
+#include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <stdexcept>
 
@@ -39,21 +40,52 @@ void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
 }
 
-Real InteractionLoop::prepareQuickReject() {
-    Sphere probe;
-    const IGeomFunctor* f = geomDispatcher->getFunctor(probe, probe).functor;
-    const Real factor = f ? f->quickRejectFactor() : -1;
-    if (factor <= 0) return -1;
+bool InteractionLoop::prepareQuickReject() {
+    Sphere sphereProbe;
+    Facet facetProbe;
+    const IGeomFunctor* ss = geomDispatcher->getFunctor(sphereProbe, sphereProbe).functor;
+    const IGeomFunctor* fs = geomDispatcher->getFunctor(facetProbe, sphereProbe).functor;
+    sphereSphereReach = ss ? ss->quickRejectFactor() : -1;
+    facetSphereReach = fs ? fs->quickRejectFactor() : -1;
+    if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
-    spheres.resize(bodies.size());
+    quickShapes.resize(bodies.size());
+    facetPlanes.clear();
     const long n = (long)bodies.size();
-#pragma omp parallel for schedule(static)
+    const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
+    bool anyFacet = false;
+#pragma omp parallel for schedule(static) reduction(|| : anyFacet)
     for (long id = 0; id < n; ++id) {
+        QuickShape& q = quickShapes[id];
+        q.radius = NaN;
         const Body* b = bodies[(Body::id_t)id].get();
-        const Sphere* s = b && b->shape && b->shape->getClassIndex() == Sphere::classIndexStatic() ? static_cast<const Sphere*>(b->shape.get()) : nullptr;
-        spheres[id] = s ? SphereAt{b->state->pos, s->radius} : SphereAt{Vector3r::Zero(), NaN};
+        if (!b || !b->shape) continue;
+        const int index = b->shape->getClassIndex();
+        if (index == sphereIndex) q = QuickShape{b->state->pos, static_cast<const Sphere&>(*b->shape).radius};
+        else if (index == facetIndex) anyFacet = true;
     }
-    return factor;
+    if (anyFacet) // few facets: their planes are gathered serially, in id order
+        for (long id = 0; id < n; ++id) {
+            const Body* b = bodies[(Body::id_t)id].get();
+            if (!b || !b->shape || b->shape->getClassIndex() != facetIndex) continue;
+            quickShapes[id].radius = -1 - (Real)facetPlanes.size();
+            facetPlanes.push_back(FacetPlane{b->state->pos, b->state->ori * static_cast<const Facet&>(*b->shape).normal});
+        }
+    return true;
+}
+
+// A sphere whose center is out of reach of a facet's plane. The functor computes the distance in
+// the facet's frame, this in global coordinates: a relative margin of 1e-12 for the rounding
+// leaves the borderline cases to the functor.
+bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b) const {
+    const bool aFacet = a.radius < 0;
+    const QuickShape& sphere = aFacet ? b : a;
+    const Real facetCode = aFacet ? a.radius : b.radius;
+    if (facetSphereReach <= 0 || !(sphere.radius > 0) || !(facetCode < 0)) return false;
+    const FacetPlane& plane = facetPlanes[(size_t)(-1 - facetCode)];
+    const Vector3r d = sphere.pos - plane.point;
+    const Real reach = facetSphereReach * sphere.radius;
+    return std::abs(plane.normal.dot(d)) > reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach); // false for NaN
 }
 
 void InteractionLoop::action() {
@@ -69,16 +101,12 @@ void InteractionLoop::action() {
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
     const long n = (long)intrs.size();
-    const Real reach = fastPath ? prepareQuickReject() : -1;
+    const bool quick = fastPath && prepareQuickReject();
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
 #pragma omp parallel for schedule(static, 256) // interleaved chunks: balanced, and the same split every run
     for (long k = 0; k < n; ++k) {
-        if (reach > 0 && !intrs.wasReal[k]) { // a potential pair of spheres still apart: nothing to do
-            const SphereAt &a = spheres[intrs.pairIds[2 * k]], &b = spheres[intrs.pairIds[2 * k + 1]];
-            const Real r = reach * (a.radius + b.radius); // NaN unless both are spheres
-            if ((a.pos - b.pos).squaredNorm() > r * r) continue;
-        }
+        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])) continue; // still apart
         Interaction& I = *intrs[(size_t)k];
         const Body* b1 = bodies[I.id1].get();
         const Body* b2 = bodies[I.id2].get();

@@ -20,7 +20,7 @@ public:
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
-        v.attr("fastPath", fastPath, "Reject distant potential sphere pairs from contiguous positions (same results as the general path)");
+        v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
     }
     void action() override;
     // Throws std::invalid_argument explaining a broken chain (an Ig2 or Ip2 product no Law2 accepts).
@@ -28,14 +28,30 @@ public:
 
 private:
     std::set<std::pair<int, int>> warnedShapePairs;
-    // Per step, contiguous: sphere centers and radii (radius NaN for other bodies), so that
-    // distant potential sphere pairs are rejected without touching bodies or interactions.
-    struct SphereAt {
-        Vector3r pos;
-        Real radius;
+    // Per step, contiguous, indexed by body id: sphere centers and radii, and facet planes, so that
+    // distant potential sphere-sphere and facet-sphere pairs are rejected without touching bodies
+    // or interactions (the Ig2 functors' quickRejectFactor promise).
+    struct QuickShape {
+        Vector3r pos; // sphere center
+        Real radius;  // sphere: > 0; facet: -1 - (index into facetPlanes); anything else: NaN
     };
-    std::vector<SphereAt> spheres;
-    Real prepareQuickReject(); // fills `spheres`; the reach factor, or a negative value if unused
+    struct FacetPlane {
+        Vector3r point, normal; // a point of the plane, unit normal (global)
+    };
+    std::vector<QuickShape> quickShapes;
+    std::vector<FacetPlane> facetPlanes;
+    Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
+    bool prepareQuickReject(); // fills quickShapes; false if no functor makes the promise
+    // True when the Ig2 functor would certainly return false for this potential pair.
+    bool quickReject(Body::id_t id1, Body::id_t id2) const {
+        const QuickShape &a = quickShapes[id1], &b = quickShapes[id2];
+        if (a.radius > 0 && b.radius > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
+            const Real r = sphereSphereReach * (a.radius + b.radius);
+            return sphereSphereReach > 0 && (a.pos - b.pos).squaredNorm() > r * r;
+        }
+        return (a.radius < 0 || b.radius < 0) && facetSphereReject(a, b);
+    }
+    bool facetSphereReject(const QuickShape& a, const QuickShape& b) const;
     void warnMissingIg2(const Shape& a, const Shape& b);
 };
 

@@ -16,6 +16,7 @@ public:
     }
     bool go(const Facet& f, const Sphere& s, const State& st1, const State& st2, const Vector3r& shift2, bool force,
             Interaction& I) override;
+    Real quickRejectFactor() const override { return 1; } // go() returns false when the plane is out of reach
 };
 
 } // namespace yade

@@ -48,7 +48,7 @@ void NewtonIntegrator::action() {
     const Vector3r* forces = s.forces.forceData();
     const Vector3r* torques = s.forces.torqueData();
     const Vector3r g = gravity;
-    const Real lambda = damping;
+    const Real lambda = damping, lower = 1 - damping, upper = 1 + damping;
     const bool gravityDamped = dampGravity;
     const int moveMask = mask;
     Real maxV2 = 0;
@@ -69,11 +69,13 @@ void NewtonIntegrator::action() {
             const Vector3r gFree = freeGravity(g, blocked);
             if (gravityDamped) accel += gFree;
             const Vector3r undamped = accel;
-            if (damped) dampTranslation(accel, vel, dt);
+            if (damped) damp(accel, vel, dt, lower, upper);
             if (!gravityDamped) accel += gFree;
-            Vector3r angAccel = accelOf(torques[id], st.inertia, blocked, 3);
+            // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
+            const bool still = (angVel.array() == 0).all() && (torques[id].array() == 0).all() && (st.inertia.array() > 0).all();
+            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(torques[id], st.inertia, blocked, 3);
             const Vector3r angUndamped = angAccel;
-            if (damped) dampRotation(angAccel, angVel, dt);
+            if (damped && !still) damp(angAccel, angVel, dt, lower, upper); // the same for rotations
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
                 const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
                 eGrav = -st.mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
@@ -100,9 +102,10 @@ void NewtonIntegrator::action() {
             if (lambda != 0) s.energy.add(dampId, eDamp);
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
-        if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt
-            st.ori = Quaternionr(AngleAxisr(angle, angVel / angVelNorm)) * st.ori;
-            st.ori.normalize();
+        if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
+            const Real half = 0.5 * angle, k = std::sin(half) / angVelNorm;
+            const Quaternionr q = Quaternionr(std::cos(half), k * angVel[0], k * angVel[1], k * angVel[2]) * st.ori;
+            st.ori.coeffs() = q.coeffs() * (1 / q.norm());
         }
     }
     maxVelocitySq = maxV2;

@@ -38,14 +38,15 @@ public:
 private:
     Real lastCheckedDt = NaN;
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
-    // (3.5.12): each component of the acceleration is reduced when it increases the on-step
-    // velocity estimate v + a·dt/2, and increased when it decreases it.
-    void dampTranslation(Vector3r& accel, const Vector3r& vel, Real dt) const {
-        for (int i = 0; i < 3; ++i) accel[i] *= 1 - damping * sign(accel[i] * (vel[i] + 0.5 * dt * accel[i]));
+    // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
+    // when it increases the on-step velocity estimate, increased when it decreases it. lower = 1 - λd,
+    // upper = 1 + λd (the same numbers as 1 - λd·sign, without branches on the sign).
+    static void damp(Vector3r& accel, const Vector3r& vel, Real dt, Real lower, Real upper) {
+        for (int i = 0; i < 3; ++i) {
+            const Real p = accel[i] * (vel[i] + 0.5 * dt * accel[i]);
+            accel[i] *= p > 0 ? lower : (p < 0 ? upper : Real(1));
+        }
     }
-    // The same for rotations.
-    void dampRotation(Vector3r& angAccel, const Vector3r& angVel, Real dt) const { dampTranslation(angAccel, angVel, dt); }
-    static Real sign(Real x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 };
 
 } // namespace yade
