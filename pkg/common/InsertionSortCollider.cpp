@@ -28,6 +28,7 @@ void InsertionSortCollider::updateBounds() {
             if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     boundDispatcher->scene = scene;
+    boxes.assign(scene->bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false});
     for (const auto& b : scene->bodies) {
         if (!b || !b->shape) continue;
         BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
@@ -41,6 +42,7 @@ void InsertionSortCollider::updateBounds() {
         b->bound->max += Vector3r::Constant(sweep);
         b->bound->refPos = b->state->pos;
         b->bound->lastUpdateIter = scene->iter;
+        boxes[b->id] = Box{b->bound->min, b->bound->max, b->mask, b->isDynamic()};
     }
 }
 
@@ -51,11 +53,14 @@ bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
     return true;
 }
 
-void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b) {
-    const auto& A = scene->bodies[a];
-    const auto& B = scene->bodies[b];
+void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b, bool overlapStarts) {
+    const Box &A = boxes[a], &B = boxes[b];
+    const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic); // as Body::mayCollide
+    const bool overlap = mayCollide && boxesOverlap(A, B);
+    // The overlap began along this axis but not along all: nothing to create, and no potential
+    // interaction to drop (there was no overlap before either), so the lookup is skipped.
+    if (overlapStarts && !overlap) return;
     InteractionContainer& intrs = scene->interactions;
-    const bool overlap = Body::mayCollide(*A, *B) && boundsOverlap(*A, *B);
     const auto& I = intrs.find(a, b);
     if (overlap && !I) intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
     else if (!overlap && I && !I->isReal()) intrs.erase(a, b);
@@ -69,7 +74,8 @@ void InsertionSortCollider::insertionSort(std::vector<Bound1D>& list) {
         size_t j = i;
         while (j > 0 && current.coord < list[j - 1].coord) {
             const Bound1D& passed = list[j - 1];
-            if (passed.isMin != current.isMin && passed.id != current.id) handleInversion(current.id, passed.id);
+            // a lower bound moving below an upper one: the overlap along this axis begins; the converse: it ends
+            if (passed.isMin != current.isMin && passed.id != current.id) handleInversion(current.id, passed.id, current.isMin);
             list[j] = list[j - 1];
             --j;
         }
@@ -157,10 +163,7 @@ void InsertionSortCollider::action() {
         return;
     }
     for (int ax = 0; ax < 3; ++ax) {
-        for (auto& e : axes[ax]) {
-            const Bound& bb = *bodies[e.id]->bound;
-            e.coord = e.isMin ? bb.min[ax] : bb.max[ax];
-        }
+        for (auto& e : axes[ax]) e.coord = e.isMin ? boxes[e.id].min[ax] : boxes[e.id].max[ax];
         insertionSort(axes[ax]);
     }
 }

@@ -38,6 +38,14 @@ private:
         bool isMin;
     };
     std::vector<Bound1D> axes[3];
+    // What the sort needs of each body, contiguous by id (filled by updateBounds): the sort then
+    // reads this array instead of following Body -> Bound and Body -> State pointers.
+    struct Box {
+        Vector3r min, max;
+        int mask;
+        bool dynamic;
+    };
+    std::vector<Box> boxes;
     long long lastBodyChanges = -1;
     Real sweep = 0;
     std::vector<Real> savedCoords;
@@ -48,8 +56,13 @@ private:
     void rebuild();
     void insertionSort(std::vector<Bound1D>& list);
     // The overlap of the bounds of a and b may have changed: create or drop their potential interaction.
-    void handleInversion(Body::id_t a, Body::id_t b);
+    void handleInversion(Body::id_t a, Body::id_t b, bool overlapStarts);
     bool boundsOverlap(const Body& a, const Body& b) const;
+    static bool boxesOverlap(const Box& a, const Box& b) {
+        for (int i = 0; i < 3; ++i)
+            if (!(a.max[i] >= b.min[i] && b.max[i] >= a.min[i])) return false; // written so that NaN never overlaps
+        return true;
+    }
     bool collidable(const std::shared_ptr<Body>& b) const { return b && b->shape && b->bound; }
 };
 
