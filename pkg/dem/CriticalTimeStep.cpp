@@ -1,6 +1,7 @@
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include <vector>
 
 namespace yade {
 
@@ -8,9 +9,19 @@ namespace {
 // Contribution (3.5.20) of a contact to the translational and rotational stiffness diagonals of
 // its first (side 1) or second body: K_ii = Σ kn·n_i² + ks·(1 - n_i²); the shear spring acts
 // on rotations through the lever arm.
+// dynamic_cast<const T*>(p), remembered per class index (there are few classes; casts are slow).
+template <class T, class Root> const T* castByIndex(const Root* p) {
+    thread_local std::vector<signed char> memo; // per class index: -1 not known yet, 0 no, 1 yes
+    if (!p) return nullptr;
+    const size_t index = (size_t)p->getClassIndex();
+    if (index >= memo.size()) memo.resize(index + 1, -1);
+    if (memo[index] < 0) memo[index] = dynamic_cast<const T*>(p) != nullptr;
+    return memo[index] ? static_cast<const T*>(p) : nullptr;
+}
+
 bool contribution(const Interaction& I, int side, Vector3r& kt, Vector3r& kr) {
-    const auto* phys = dynamic_cast<const NormShearPhys*>(I.phys.get());
-    const auto* geom = dynamic_cast<const GenericSpheresContact*>(I.geom.get());
+    const auto* phys = castByIndex<NormShearPhys>(I.phys.get());
+    const auto* geom = castByIndex<GenericSpheresContact>(I.geom.get());
     if (!phys || !geom) return false;
     const Vector3r n2 = geom->normal.cwiseProduct(geom->normal);
     const Real arm = side == 1 ? geom->refR1 : geom->refR2;
@@ -20,6 +31,7 @@ bool contribution(const Interaction& I, int side, Vector3r& kt, Vector3r& kr) {
 }
 
 void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep& best) {
+    if ((kt.array() <= 0).all() && (kr.array() <= 0).all()) return; // no contact: nothing to read
     if (!b.isDynamic()) return;
     const State& s = *b.state;
     for (int i = 0; i < 6; ++i) {

@@ -15,6 +15,19 @@ static inline Vector3r accelOf(const Vector3r& f, const Vector3r& m, int blocked
     return a;
 }
 
+// sin(angle/2) and cos(angle/2). Rotations per step are small: for angle/2 below 1e-2 the Taylor
+// series to x⁷ and x⁸ (truncation below 1e-21 relative) replaces the library call (within an ulp).
+static inline void sinCosHalf(Real angle, Real& s, Real& c) {
+    const Real x = 0.5 * angle, x2 = x * x;
+    if (x2 < 1e-4) {
+        s = x * (1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42)));
+        c = 1 - x2 / 2 * (1 - x2 / 12 * (1 - x2 / 30 * (1 - x2 / 56)));
+    } else {
+        s = std::sin(x);
+        c = std::cos(x);
+    }
+}
+
 // Gravity without the blocked translations.
 static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
     Vector3r a = g;
@@ -48,7 +61,7 @@ void NewtonIntegrator::action() {
     const Vector3r* forces = s.forces.forceData();
     const Vector3r* torques = s.forces.torqueData();
     const Vector3r g = gravity;
-    const Real lambda = damping, lower = 1 - damping, upper = 1 + damping;
+    const Real lambda = damping;
     const bool gravityDamped = dampGravity;
     const int moveMask = mask;
     Real maxV2 = 0;
@@ -69,13 +82,13 @@ void NewtonIntegrator::action() {
             const Vector3r gFree = freeGravity(g, blocked);
             if (gravityDamped) accel += gFree;
             const Vector3r undamped = accel;
-            if (damped) damp(accel, vel, dt, lower, upper);
+            if (damped) damp(accel, vel, dt, lambda);
             if (!gravityDamped) accel += gFree;
             // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
             const bool still = (angVel.array() == 0).all() && (torques[id].array() == 0).all() && (st.inertia.array() > 0).all();
             Vector3r angAccel = still ? Vector3r::Zero() : accelOf(torques[id], st.inertia, blocked, 3);
             const Vector3r angUndamped = angAccel;
-            if (damped && !still) damp(angAccel, angVel, dt, lower, upper); // the same for rotations
+            if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
                 const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
                 eGrav = -st.mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
@@ -103,9 +116,13 @@ void NewtonIntegrator::action() {
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
-            const Real half = 0.5 * angle, k = std::sin(half) / angVelNorm;
-            const Quaternionr q = Quaternionr(std::cos(half), k * angVel[0], k * angVel[1], k * angVel[2]) * st.ori;
-            st.ori.coeffs() = q.coeffs() * (1 / q.norm());
+            Real sinHalf, cosHalf;
+            sinCosHalf(angle, sinHalf, cosHalf);
+            const Real k = sinHalf / angVelNorm;
+            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * st.ori;
+            // back to unit length: |q|² = 1 + e with e of the order of the rounding, and
+            // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²), exact in double precision
+            st.ori.coeffs() = q.coeffs() * (0.5 * (3 - q.coeffs().squaredNorm()));
         }
     }
     maxVelocitySq = maxV2;

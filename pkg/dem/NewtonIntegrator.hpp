@@ -39,12 +39,12 @@ private:
     Real lastCheckedDt = NaN;
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
-    // when it increases the on-step velocity estimate, increased when it decreases it. lower = 1 - λd,
-    // upper = 1 + λd (the same numbers as 1 - λd·sign, without branches on the sign).
-    static void damp(Vector3r& accel, const Vector3r& vel, Real dt, Real lower, Real upper) {
+    // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
+    // computed without branches (its value is random for bodies in contact: branches mispredict).
+    static void damp(Vector3r& accel, const Vector3r& vel, Real dt, Real lambda) {
         for (int i = 0; i < 3; ++i) {
             const Real p = accel[i] * (vel[i] + 0.5 * dt * accel[i]);
-            accel[i] *= p > 0 ? lower : (p < 0 ? upper : Real(1));
+            accel[i] *= 1 - lambda * Real(int(p > 0) - int(p < 0));
         }
     }
 };
