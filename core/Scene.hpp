@@ -5,6 +5,7 @@
 #include <core/Engine.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/InteractionContainer.hpp>
+#include <lib/base/ExternalWrites.hpp>
 #include <map>
 #include <mutex>
 
@@ -29,6 +30,20 @@ public:
     // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
     // the integrator's stability guard), cleared at the start of each step.
     std::vector<Body::id_t> newContactBodies;
+    // Positions of all bodies as NewtonIntegrator left them, contiguous by id (NaN for holes), so
+    // that the collider and the interaction loop need not follow Body -> State pointers. Usable
+    // while positionsCurrent(). An engine other than the integrator that moves bodies must call
+    // positionsChanged(); writes from Python are noticed through externalWrites().
+    struct PositionMirror {
+        std::vector<Vector3r> pos;
+        long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
+    } positionMirror;
+    bool positionsCurrent() const {
+        const PositionMirror& m = positionMirror;
+        return m.changes == bodies.changes && m.pos.size() == bodies.size() && (m.iter == iter || m.iter + 1 == iter)
+                && m.writes == externalWrites();
+    }
+    void positionsChanged() { positionMirror.iter = -1; }
 
     Scene();
     // Runs every engine once and advances iter and time.

@@ -11,6 +11,12 @@ bool InsertionSortCollider::needsRun() const {
     const Real limit2 = sweep * sweep;
     const long n = (long)bodies.size();
     int moved = 0;
+    if (scene->positionsCurrent() && boxes.size() == bodies.size()) { // contiguous: the integrator's positions, our boxes
+        const Vector3r* pos = scene->positionMirror.pos.data();
+#pragma omp parallel for schedule(static) reduction(| : moved)
+        for (long id = 0; id < n; ++id) moved |= boxes[id].collidable && (pos[id] - boxes[id].refPos).squaredNorm() > limit2; // (3.1.6)
+        return moved != 0;
+    }
     // split as in NewtonIntegrator, so that each thread reads the states it has just written
 #pragma omp parallel for schedule(static) reduction(| : moved)
     for (long id = 0; id < n; ++id) {
@@ -28,7 +34,7 @@ void InsertionSortCollider::updateBounds() {
             if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     boundDispatcher->scene = scene;
-    boxes.assign(scene->bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false});
+    boxes.assign(scene->bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false, false});
     for (const auto& b : scene->bodies) {
         if (!b || !b->shape) continue;
         BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
@@ -42,7 +48,7 @@ void InsertionSortCollider::updateBounds() {
         b->bound->max += Vector3r::Constant(sweep);
         b->bound->refPos = b->state->pos;
         b->bound->lastUpdateIter = scene->iter;
-        boxes[b->id] = Box{b->bound->min, b->bound->max, b->mask, b->isDynamic()};
+        boxes[b->id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->isDynamic(), true};
     }
 }
 

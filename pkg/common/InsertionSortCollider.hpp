@@ -42,8 +42,10 @@ private:
     // reads this array instead of following Body -> Bound and Body -> State pointers.
     struct Box {
         Vector3r min, max;
+        Vector3r refPos; // position when the bound was computed
         int mask;
         bool dynamic;
+        bool collidable;
     };
     std::vector<Box> boxes;
     long long lastBodyChanges = -1;

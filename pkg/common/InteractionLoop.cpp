@@ -49,28 +49,38 @@ bool InteractionLoop::prepareQuickReject() {
     facetSphereReach = fs ? fs->quickRejectFactor() : -1;
     if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
-    quickShapes.resize(bodies.size());
-    facetPlanes.clear();
     const long n = (long)bodies.size();
-    const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
-    bool anyFacet = false;
-#pragma omp parallel for schedule(static) reduction(|| : anyFacet)
-    for (long id = 0; id < n; ++id) {
-        QuickShape& q = quickShapes[id];
-        q.radius = NaN;
-        const Body* b = bodies[(Body::id_t)id].get();
-        if (!b || !b->shape) continue;
-        const int index = b->shape->getClassIndex();
-        if (index == sphereIndex) q = QuickShape{b->state->pos, static_cast<const Sphere&>(*b->shape).radius};
-        else if (index == facetIndex) anyFacet = true;
-    }
-    if (anyFacet) // few facets: their planes are gathered serially, in id order
+    quickShapes.resize(n);
+    ShapeCache& cache = shapeCache;
+    if (cache.changes == bodies.changes && cache.writes == externalWrites() && cache.radius.size() == (size_t)n
+            && scene->positionsCurrent()) { // shapes unchanged: contiguous copies only
+        const Vector3r* pos = scene->positionMirror.pos.data();
+#pragma omp parallel for schedule(static)
+        for (long id = 0; id < n; ++id) quickShapes[id] = QuickShape{pos[id], cache.radius[id]};
+    } else { // from the bodies; the radii (and facet markers) are kept for the next steps
+        cache.writes = externalWrites();
+        cache.changes = bodies.changes;
+        cache.radius.assign(n, NaN);
+        cache.facetIds.clear();
+        const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
+#pragma omp parallel for schedule(static)
         for (long id = 0; id < n; ++id) {
             const Body* b = bodies[(Body::id_t)id].get();
-            if (!b || !b->shape || b->shape->getClassIndex() != facetIndex) continue;
-            quickShapes[id].radius = -1 - (Real)facetPlanes.size();
-            facetPlanes.push_back(FacetPlane{b->state->pos, b->state->ori * static_cast<const Facet&>(*b->shape).normal});
+            if (b && b->shape && b->shape->getClassIndex() == sphereIndex) cache.radius[id] = static_cast<const Sphere&>(*b->shape).radius;
+            quickShapes[id] = QuickShape{b ? b->state->pos : Vector3r::Constant(NaN), cache.radius[id]};
         }
+        for (long id = 0; id < n; ++id) { // few facets: gathered serially, in id order
+            const Body* b = bodies[(Body::id_t)id].get();
+            if (!b || !b->shape || b->shape->getClassIndex() != facetIndex) continue;
+            quickShapes[id].radius = cache.radius[id] = -1 - (Real)cache.facetIds.size();
+            cache.facetIds.push_back((Body::id_t)id);
+        }
+    }
+    facetPlanes.clear(); // facets may move or turn: their planes are computed every step
+    for (Body::id_t id : cache.facetIds) {
+        const Body& b = *bodies[id];
+        facetPlanes.push_back(FacetPlane{b.state->pos, b.state->ori * static_cast<const Facet&>(*b.shape).normal});
+    }
     return true;
 }
 

@@ -39,6 +39,13 @@ private:
         Vector3r point, normal; // a point of the plane, unit normal (global)
     };
     std::vector<QuickShape> quickShapes;
+    // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
+    // while no body was added or removed and nothing was written from Python.
+    struct ShapeCache {
+        std::vector<Real> radius;
+        std::vector<Body::id_t> facetIds;
+        long long changes = -1, writes = -1;
+    } shapeCache;
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
     bool prepareQuickReject(); // fills quickShapes; false if no functor makes the promise

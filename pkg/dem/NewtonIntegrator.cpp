@@ -66,12 +66,19 @@ void NewtonIntegrator::action() {
     const int moveMask = mask;
     Real maxV2 = 0;
     long diverged = -1; // a body whose new state is not finite (not written)
+    const long long writesBefore = externalWrites();
+    std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
+    mirror.resize(n);
 #pragma omp parallel for schedule(static) reduction(max : maxV2)
     for (long id = 0; id < n; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
-        if (!b) continue;
-        if (moveMask != -1 && !(b->mask & moveMask)) continue; // bodies outside the mask are not moved
+        if (!b) {
+            mirror[id] = Vector3r::Constant(NaN);
+            continue;
+        }
         State& st = *b->state;
+        mirror[id] = st.pos; // replaced below by the new position
+        if (moveMask != -1 && !(b->mask & moveMask)) continue; // bodies outside the mask are not moved
         const int blocked = st.blockedDOFsMask;
         const bool dynamic = blocked != State::DOF_ALL;
         Vector3r vel = st.vel, angVel = st.angVel;
@@ -109,6 +116,7 @@ void NewtonIntegrator::action() {
         st.vel = vel;
         st.angVel = angVel;
         st.pos = pos;
+        mirror[id] = pos;
         if (energy && dynamic) {
             s.energy.add(gravId, eGrav);
             s.energy.add(kinId, eKin);
@@ -125,6 +133,9 @@ void NewtonIntegrator::action() {
             st.ori.coeffs() = q.coeffs() * (0.5 * (3 - q.coeffs().squaredNorm()));
         }
     }
+    s.positionMirror.iter = s.iter;
+    s.positionMirror.writes = writesBefore;
+    s.positionMirror.changes = s.bodies.changes;
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
 }

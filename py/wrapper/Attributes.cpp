@@ -1,3 +1,4 @@
+#include <lib/base/ExternalWrites.hpp>
 #include <cmath>
 #include <limits>
 #include <py/wrapper/Attributes.hpp>
@@ -123,6 +124,7 @@ static py::object copyOf(Serializable& s, const AttrInfo& a) {
 static void assign(Serializable& s, const AttrInfo& a, py::handle v);
 
 void setAttr(Serializable& s, const AttrInfo& a, py::handle v) {
+    noteExternalWrite();
     py::object old = copyOf(s, a);
     assign(s, a, v);
     try {

@@ -1,5 +1,6 @@
 // Python classes for every registered C++ class, made generically from the attribute table;
 // the few hand-written members below are derived properties and methods, not attributes.
+#include <lib/base/ExternalWrites.hpp>
 #include <AllHeaders.hpp>
 #include <functional>
 #include <py/wrapper/Attributes.hpp>
@@ -132,7 +133,11 @@ static void bindExtras(py::module_& m) {
     }
 
     existing<State, Serializable>()
-            .def_property("blockedDOFs", &State::blockedDOFs, &State::setBlockedDOFs,
+            .def_property("blockedDOFs", &State::blockedDOFs,
+                    [](State& st, const std::string& dofs) {
+                        noteExternalWrite();
+                        st.setBlockedDOFs(dofs);
+                    },
                     "Degrees of freedom the integrator does not change, as a string of 'xyzXYZ' (capitals: rotations)")
             .def("displ", &State::displ, "Displacement from refPos")
             .def("rot", &State::rot, "Rotation from refOri (axis × angle)");
@@ -141,7 +146,11 @@ static void bindExtras(py::module_& m) {
             .def_property("mat", [](py::object self) { return self.attr("material"); },
                     [](py::object self, py::object v) { self.attr("material") = v; }, "Alias of material")
             .def("intrs", [](Body& b) { return bodyInteractions(b); }, "Interactions (real ones) of this body in O.interactions")
-            .def_property("dynamic", &Body::isDynamic, &Body::setDynamic,
+            .def_property("dynamic", &Body::isDynamic,
+                    [](Body& b, bool d) {
+                        noteExternalWrite();
+                        b.setDynamic(d);
+                    },
                     "Whether forces move this body; False blocks all its degrees of freedom (State.blockedDOFs='xyzXYZ') and it keeps its prescribed velocity")
             .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; });
 

@@ -12,6 +12,7 @@
 //    the wrong shape or with non-numeric items is not convertible (TypeError from pybind11).
 //  * Dense types share one set of templates (defDense / defVector); only Matrix3 and Quaternion have
 //    type-specific parts.
+#include <lib/base/ExternalWrites.hpp>
 #include <py/wrapper/Math.hpp>
 
 #include <lib/base/Math.hpp>
@@ -257,12 +258,12 @@ namespace {
 		        .def("__neg__", [](const T& a) -> T { return -a; }, py::is_operator())
 		        .def("__mul__", [](const T& a, S s) -> T { return a * s; }, py::is_operator())
 		        .def("__rmul__", [](const T& a, S s) -> T { return s * a; }, py::is_operator())
-		        .def("__iadd__", [](py::object self, const T& b) { self.cast<T&>() += b; return self; }, py::is_operator())
-		        .def("__isub__", [](py::object self, const T& b) { self.cast<T&>() -= b; return self; }, py::is_operator())
-		        .def("__imul__", [](py::object self, S s) { self.cast<T&>() *= s; return self; }, py::is_operator());
+		        .def("__iadd__", [](py::object self, const T& b) { noteExternalWrite(); self.cast<T&>() += b; return self; }, py::is_operator())
+		        .def("__isub__", [](py::object self, const T& b) { noteExternalWrite(); self.cast<T&>() -= b; return self; }, py::is_operator())
+		        .def("__imul__", [](py::object self, S s) { noteExternalWrite(); self.cast<T&>() *= s; return self; }, py::is_operator());
 		if constexpr (isFloat) {
 			cls.def("__truediv__", [](const T& a, S s) -> T { return a / s; }, py::is_operator())
-			        .def("__itruediv__", [](py::object self, S s) { self.cast<T&>() /= s; return self; }, py::is_operator());
+			        .def("__itruediv__", [](py::object self, S s) { noteExternalWrite(); self.cast<T&>() /= s; return self; }, py::is_operator());
 		}
 
 		// exact comparison; mutable, hence unhashable
@@ -314,12 +315,12 @@ namespace {
 
 		cls.def("__len__", [](const T&) { return N; })
 		        .def("__getitem__", [](const T& a, py::ssize_t i) -> S { return a[normIndex(i, N, nameOf<T>())]; })
-		        .def("__setitem__", [](T& a, py::ssize_t i, S x) { a[normIndex(i, N, nameOf<T>())] = x; });
+		        .def("__setitem__", [](T& a, py::ssize_t i, S x) { noteExternalWrite(); a[normIndex(i, N, nameOf<T>())] = x; });
 
 		cls.def("dot", [](const T& a, const T& b) -> S { return a.dot(b); }, py::arg("other"));
 		if constexpr (std::is_floating_point_v<S>) {
 			cls.def("normalized", [](const T& a) -> T { return a.normalized(); })
-			        .def("normalize", [](T& a) { a.normalize(); });
+			        .def("normalize", [](T& a) { noteExternalWrite(); a.normalize(); });
 		}
 		if constexpr (N == 3) cls.def("cross", [](const T& a, const T& b) -> T { return a.cross(b); }, py::arg("other"));
 
@@ -365,12 +366,12 @@ namespace {
 		cls.def("__len__", [](const Matrix3r&) { return 3; })
 		        .def("__getitem__", [at](Matrix3r& m, std::pair<py::ssize_t, py::ssize_t> ij) -> Real { return at(m, ij); })
 		        .def("__getitem__", [](const Matrix3r& m, py::ssize_t i) -> Vector3r { return m.row(normIndex(i, 3, "Matrix3")); })
-		        .def("__setitem__", [at](Matrix3r& m, std::pair<py::ssize_t, py::ssize_t> ij, Real x) { at(m, ij) = x; })
-		        .def("__setitem__", [](Matrix3r& m, py::ssize_t i, const Vector3r& r) { m.row(normIndex(i, 3, "Matrix3")) = r; });
+		        .def("__setitem__", [at](Matrix3r& m, std::pair<py::ssize_t, py::ssize_t> ij, Real x) { noteExternalWrite(); at(m, ij) = x; })
+		        .def("__setitem__", [](Matrix3r& m, py::ssize_t i, const Vector3r& r) { noteExternalWrite(); m.row(normIndex(i, 3, "Matrix3")) = r; });
 
 		cls.def("__mul__", [](const Matrix3r& a, const Matrix3r& b) -> Matrix3r { return a * b; }, py::is_operator())
 		        .def("__mul__", [](const Matrix3r& a, const Vector3r& v) -> Vector3r { return a * v; }, py::is_operator())
-		        .def("__imul__", [](py::object self, const Matrix3r& b) { self.cast<Matrix3r&>() *= b; return self; }, py::is_operator());
+		        .def("__imul__", [](py::object self, const Matrix3r& b) { noteExternalWrite(); self.cast<Matrix3r&>() *= b; return self; }, py::is_operator());
 
 		cls.def("trace", [](const Matrix3r& m) { return m.trace(); })
 		        .def("determinant", [](const Matrix3r& m) { return m.determinant(); })
@@ -406,11 +407,11 @@ namespace {
 		// q[0..3] = x, y, z, w (minieigen's order, i.e. Eigen's storage order)
 		cls.def("__len__", [](const Q&) { return 4; })
 		        .def("__getitem__", [](const Q& q, py::ssize_t i) { return q.coeffs()[normIndex(i, 4, "Quaternion")]; })
-		        .def("__setitem__", [](Q& q, py::ssize_t i, Real x) { q.coeffs()[normIndex(i, 4, "Quaternion")] = x; });
+		        .def("__setitem__", [](Q& q, py::ssize_t i, Real x) { noteExternalWrite(); q.coeffs()[normIndex(i, 4, "Quaternion")] = x; });
 
 		cls.def("__mul__", [](const Q& a, const Q& b) -> Q { return a * b; }, py::is_operator())
 		        .def("__mul__", [](const Q& q, const Vector3r& v) -> Vector3r { return q * v; }, py::is_operator())
-		        .def("__imul__", [](py::object self, const Q& b) { self.cast<Q&>() *= b; return self; }, py::is_operator())
+		        .def("__imul__", [](py::object self, const Q& b) { noteExternalWrite(); self.cast<Q&>() *= b; return self; }, py::is_operator())
 		        .def("__eq__", [](const Q& a, const Q& b) { return a.coeffs() == b.coeffs(); }, py::is_operator())
 		        .def("__ne__", [](const Q& a, const Q& b) { return a.coeffs() != b.coeffs(); }, py::is_operator());
 		cls.attr("__hash__") = py::none();
@@ -423,7 +424,7 @@ namespace {
 		        .def("inverse", [](const Q& q) -> Q { return q.inverse(); })
 		        .def("norm", [](const Q& q) { return q.norm(); })
 		        .def("squaredNorm", [](const Q& q) { return q.squaredNorm(); })
-		        .def("normalize", [](Q& q) { q.normalize(); })
+		        .def("normalize", [](Q& q) { noteExternalWrite(); q.normalize(); })
 		        .def("normalized", [](const Q& q) -> Q { return q.normalized(); })
 		        .def("dot", [](const Q& a, const Q& b) { return a.dot(b); }, py::arg("other"))
 		        .def("angularDistance", [](const Q& a, const Q& b) { return a.angularDistance(b); }, py::arg("other"))

@@ -1,0 +1,90 @@
+"""Data the engines keep from step to step (the integrator's contiguous positions, the collider's
+boxes, the interaction loop's radii) must follow every change made from Python between steps:
+attribute setters, in-place changes through vector views, new or erased bodies, and changes made
+from a PyRunner inside a run. Each test compares with what a fresh scene does with the same state.
+"""
+import pytest
+
+from yade import *  # noqa: F401,F403
+from yade import O, Vector3
+from yade.utils import sphere
+
+
+@pytest.fixture(autouse=True)
+def fresh_scene():
+    O.pause()
+    O.reset()
+    yield
+    O.pause()
+    O.reset()
+
+
+def makeScene(gap=0.05, pyRunner=None):
+    """Two spheres of radius 0.01 on the x axis, `gap` apart, no gravity; a third far away."""
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((0, 0, 0), .01), sphere((0.02 + gap, 0, 0), .01), sphere((1, 1, 1), .01)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)] + ([pyRunner] if pyRunner else [])
+    O.dt = 1e-6
+    O.run(20, True)  # several steps: the caches are filled and in use
+    assert not O.interactions.has(0, 1) or not O.interactions[0, 1].isReal
+
+
+def touching():
+    return O.interactions.has(0, 1) and O.interactions[0, 1].isReal
+
+
+def test_teleport_by_setter_is_seen_by_collider_and_loop():
+    makeScene()
+    O.bodies[1].state.pos = (0.019, 0, 0)  # overlapping body 0 now
+    O.step()
+    assert touching()
+    assert O.forces.f(0)[0] < 0  # pushed apart
+
+
+def test_teleport_through_a_vector_view_is_seen():
+    makeScene()
+    O.bodies[1].state.pos[0] = 0.019  # in place, through the view
+    O.step()
+    assert touching()
+
+
+def test_in_place_operator_on_a_view_is_seen():
+    makeScene()
+    p = O.bodies[1].state.pos
+    p -= Vector3(0.051, 0, 0)
+    O.step()
+    assert touching()
+
+
+def test_radius_change_is_seen_by_the_fast_path():
+    makeScene(gap=0.005)
+    O.bodies[1].shape.radius = 0.02  # now reaches body 0 (gap 0.005 < 0.01 more radius)
+    O.step()
+    assert touching()
+
+
+def test_change_made_by_a_pyrunner_inside_a_run_is_seen():
+    runner = PyRunner(command='import yade\nif yade.O.iter == 30: yade.O.bodies[1].state.pos = (0.019, 0, 0)', iterPeriod=1)
+    makeScene(pyRunner=runner)
+    O.run(15, True)  # the runner moves body 1 at step 30 (after the integrator), the next step sees it
+    assert touching()
+
+
+def test_new_body_overlapping_is_seen():
+    makeScene()
+    O.bodies.append(sphere((0, 0.019, 0), .01))
+    O.step()
+    assert O.interactions.has(0, 3) and O.interactions[0, 3].isReal
+
+
+def test_positions_of_the_integrator_match_the_states():
+    """The contiguous copy the collider uses is the integrator's own result: after many steps
+    with motion, the collider ran when needed (the moving sphere hits the resting one)."""
+    makeScene(gap=0.05)
+    O.bodies[1].state.vel = (-5, 0, 0)  # 0.05 m at 5 m/s: contact after 10 000 steps of 1e-6 s
+    O.run(10500, True)
+    assert touching() or O.bodies[1].state.vel[0] > 0  # in contact, or already bounced back
+    assert O.bodies[0].state.vel[0] < 0  # body 0 was pushed
