@@ -24,6 +24,18 @@ public:
         torque[thread()][id] += t;
         markUnsynced();
     }
+    // A contact's force on body 1 (its opposite on body 2) and the torques on both, with one
+    // lookup of the calling thread's buffers.
+    void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
+        const int th = thread();
+        std::vector<Vector3r>& F = force[th];
+        std::vector<Vector3r>& T = torque[th];
+        F[id1] += f1;
+        F[id2] -= f1;
+        T[id1] += t1;
+        T[id2] += t2;
+        markUnsynced();
+    }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);

@@ -28,6 +28,7 @@ bool InteractionContainer::insert(const Ptr& I) {
     wasReal.push_back(I->isReal());
     partners[a].emplace_back(b, I.get());
     partners[b].emplace_back(a, I.get());
+    ++changes;
     return true;
 }
 
@@ -58,6 +59,7 @@ bool InteractionContainer::erase(id_t a, id_t b) {
     linIntrs.pop_back();
     pairIds.resize(2 * last);
     wasReal.pop_back();
+    ++changes;
     return true;
 }
 
@@ -66,6 +68,7 @@ void InteractionContainer::clear() {
     pairIds.clear();
     wasReal.clear();
     for (auto& p : partners) p.clear();
+    ++changes;
 }
 
 size_t InteractionContainer::countReal() const {

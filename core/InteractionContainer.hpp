@@ -37,6 +37,8 @@ public:
     // to date), so that distant potential pairs are skipped without touching the objects.
     std::vector<id_t> pairIds; // 2 per interaction
     std::vector<char> wasReal;
+    // Incremented by every insert, erase and clear (the order of linIntrs changed).
+    long long changes = 0;
 
 private:
     std::vector<Ptr> linIntrs;

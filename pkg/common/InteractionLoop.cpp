@@ -4,6 +4,9 @@
 #include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <stdexcept>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace yade {
 
@@ -98,6 +101,32 @@ bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b
     return std::abs(plane.normal.dot(d)) > reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach); // false for NaN
 }
 
+// Written only when it changes: the flags of both threads' interactions share cache lines, and
+// reading a line both threads only read costs nothing (writing it moves it between cores).
+static inline void setWasReal(InteractionContainer& intrs, long k, bool real) {
+    if (intrs.wasReal[k] != (char)real) intrs.wasReal[k] = real;
+}
+
+// The thread that integrates body `id` under OpenMP's static schedule of n iterations (ranges of
+// n/threads, the first n%threads ones one longer). Only locality depends on it, never results.
+static int ownerOf(long id, long n, int threads) {
+    const long q = n / threads, r = n % threads, cut = r * (q + 1);
+    return (int)(id < cut ? id / (q + 1) : r + (q > 0 ? (id - cut) / q : 0));
+}
+
+void InteractionLoop::assignPairsToThreads(int threads) {
+    const InteractionContainer& intrs = scene->interactions;
+    const long nBodies = (long)scene->bodies.size(), n = (long)intrs.size();
+    threadPairs.assign(threads, {});
+    for (long k = 0; k < n; ++k) {
+        const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
+        const int ta = ownerOf(a, nBodies, threads), tb = ownerOf(b, nBodies, threads);
+        threadPairs[ta == tb || (a + b) % 2 == 0 ? ta : tb].push_back(k);
+    }
+    threadPairsFor = intrs.changes;
+    threadPairsBodies = (size_t)nBodies;
+}
+
 void InteractionLoop::action() {
     Scene& s = *scene;
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
@@ -110,12 +139,21 @@ void InteractionLoop::action() {
 
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
-    const long n = (long)intrs.size();
     const bool quick = fastPath && prepareQuickReject();
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
-#pragma omp parallel for schedule(static, 256) // interleaved chunks: balanced, and the same split every run
-    for (long k = 0; k < n; ++k) {
+    int threads = 1;
+#ifdef _OPENMP
+    threads = omp_get_max_threads();
+#endif
+    if (threadPairsFor != intrs.changes || threadPairsBodies != bodies.size() || (int)threadPairs.size() != threads) assignPairsToThreads(threads);
+#pragma omp parallel num_threads(threads)
+#ifdef _OPENMP
+    for (int list = omp_get_thread_num(); list < threads; list += omp_get_num_threads()) // (one list each unless fewer threads came)
+#else
+    for (int list = 0; list < threads; ++list)
+#endif
+    for (long k : threadPairs[list]) {
         if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])) continue; // still apart
         Interaction& I = *intrs[(size_t)k];
         const Body* b1 = bodies[I.id1].get();
@@ -136,7 +174,7 @@ void InteractionLoop::action() {
         const bool wasReal = I.isReal();
         if (!geomEntry.functor->go(*b1->shape, *b2->shape, *b1->state, *b2->state, Vector3r::Zero(), false, I)) {
             if (wasReal) I.reset(); // the geometry says the contact is over
-            intrs.wasReal[k] = false;
+            setWasReal(intrs, k, false);
             continue;
         }
         if (!I.phys) {
@@ -163,7 +201,7 @@ void InteractionLoop::action() {
             continue;
         }
         if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
-        intrs.wasReal[k] = I.isReal();
+        setWasReal(intrs, k, I.isReal());
     }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
     if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);

@@ -60,6 +60,14 @@ private:
     }
     bool facetSphereReject(const QuickShape& a, const QuickShape& b) const;
     void warnMissingIg2(const Shape& a, const Shape& b);
+    // Interactions (positions in O.interactions) per thread: each goes to a thread that integrates
+    // one of its bodies (NewtonIntegrator splits the body ids in equal consecutive ranges), so that
+    // the states it reads were written on the same core; pairs across two ranges alternate between
+    // their two threads. In container order within each list: one thread gives the serial order.
+    std::vector<std::vector<long>> threadPairs;
+    long long threadPairsFor = -1; // O.interactions' change counter when built
+    size_t threadPairsBodies = 0;
+    void assignPairsToThreads(int threads);
 };
 
 } // namespace yade

@@ -30,11 +30,9 @@ bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Inte
     if (scene->trackEnergy)
         scene->energy.add(elastId, 0.5 * (phys.normalForce.squaredNorm() / phys.kn + (phys.ks > 0 ? shearForce.squaredNorm() / phys.ks : 0)));
     const Vector3r force = -phys.normalForce - shearForce; // on body 1
-    ForceContainer& forces = scene->forces;
-    forces.addForce(I.id1, force);
-    forces.addForce(I.id2, -force);
-    forces.addTorque(I.id1, (geom.refR1 - 0.5 * geom.penetrationDepth) * geom.normal.cross(force));
-    forces.addTorque(I.id2, (geom.refR2 - 0.5 * geom.penetrationDepth) * geom.normal.cross(force));
+    const Vector3r arm = geom.normal.cross(force);
+    scene->forces.addContact(I.id1, I.id2, force, (geom.refR1 - 0.5 * geom.penetrationDepth) * arm,
+            (geom.refR2 - 0.5 * geom.penetrationDepth) * arm);
     return true;
 }
 
