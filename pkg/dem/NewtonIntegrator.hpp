@@ -41,11 +41,14 @@ private:
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
     // computed without branches (its value is random for bodies in contact: branches mispredict).
+    // Component by component in registers: a loop writing the vector in memory made the next
+    // vector read wait for the stores.
     static void damp(Vector3r& accel, const Vector3r& vel, Real dt, Real lambda) {
-        for (int i = 0; i < 3; ++i) {
-            const Real p = accel[i] * (vel[i] + 0.5 * dt * accel[i]);
-            accel[i] *= 1 - lambda * Real(int(p > 0) - int(p < 0));
-        }
+        const auto one = [dt, lambda](Real a, Real v) {
+            const Real p = a * (v + 0.5 * dt * a);
+            return a * (1 - lambda * Real(int(p > 0) - int(p < 0)));
+        };
+        accel = Vector3r(one(accel[0], vel[0]), one(accel[1], vel[1]), one(accel[2], vel[2]));
     }
 };
 
