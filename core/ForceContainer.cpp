@@ -31,6 +31,10 @@ void ForceContainer::addPermTorque(int id, const Vector3r& t) {
 
 void ForceContainer::sync() {
     if (synced) return;
+    if (single()) { // forceData() and torqueData() give the buffer itself
+        synced = true;
+        return;
+    }
     const long n = (long)summedForce.size();
     // each body's sum is done in thread-buffer order, so the result does not depend on the split
 #pragma omp parallel for schedule(static) if (n > 2000)

@@ -39,14 +39,15 @@ public:
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);
-    const Vector3r& getForce(int id) { sync(); return summedForce[id]; }
-    const Vector3r& getTorque(int id) { sync(); return summedTorque[id]; }
+    const Vector3r& getForce(int id) { sync(); return forceData()[id]; }
+    const Vector3r& getTorque(int id) { sync(); return torqueData()[id]; }
     const Vector3r& getPermForce(int id) const { return permForce[id]; }
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     void sync();
     // The summed arrays (call sync() first), for loops over all bodies.
-    const Vector3r* forceData() const { return summedForce.data(); }
-    const Vector3r* torqueData() const { return summedTorque.data(); }
+    // (With one thread and no permanent force the sums are the thread's buffer itself: no copy.)
+    const Vector3r* forceData() const { return single() ? force[0].data() : summedForce.data(); }
+    const Vector3r* torqueData() const { return single() ? torque[0].data() : summedTorque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
 
@@ -56,6 +57,7 @@ private:
     void markUnsynced() {
         if (synced) synced = false;
     }
+    bool single() const { return force.size() == 1 && !anyPermanent; }
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();
