@@ -147,14 +147,22 @@ void InteractionLoop::action() {
     threads = omp_get_max_threads();
 #endif
     if (threadPairsFor != intrs.changes || threadPairsBodies != bodies.size() || (int)threadPairs.size() != threads) assignPairsToThreads(threads);
+    if (quick && threads > 1) threadQuickShapes.resize(threads);
 #pragma omp parallel num_threads(threads)
+    {
+    int first = 0, step = 1;
 #ifdef _OPENMP
-    for (int list = omp_get_thread_num(); list < threads; list += omp_get_num_threads()) // (one list each unless fewer threads came)
-#else
-    for (int list = 0; list < threads; ++list)
+    first = omp_get_thread_num();
+    step = omp_get_num_threads();
 #endif
+    const QuickShape* shapes = quickShapes.data();
+    if (quick && threads > 1) {
+        threadQuickShapes[first] = quickShapes;
+        shapes = threadQuickShapes[first].data();
+    }
+    for (int list = first; list < threads; list += step) // (one list each unless fewer threads came)
     for (long k : threadPairs[list]) {
-        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])) continue; // still apart
+        if (quick && !intrs.wasReal[k] && quickReject(shapes, intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])) continue; // still apart
         Interaction& I = *intrs[(size_t)k];
         const Body* b1 = bodies[I.id1].get();
         const Body* b2 = bodies[I.id2].get();
@@ -202,6 +210,7 @@ void InteractionLoop::action() {
         }
         if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
         setWasReal(intrs, k, I.isReal());
+    }
     }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
     if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);

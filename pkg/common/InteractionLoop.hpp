@@ -39,6 +39,9 @@ private:
         Vector3r point, normal; // a point of the plane, unit normal (global)
     };
     std::vector<QuickShape> quickShapes;
+    // With several threads, each reads its own copy (copied in sequence: the random reads of the
+    // pairs then stay in the core's cache instead of fetching lines the other core just wrote).
+    std::vector<std::vector<QuickShape>> threadQuickShapes;
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
     struct ShapeCache {
@@ -50,8 +53,8 @@ private:
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
     bool prepareQuickReject(); // fills quickShapes; false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair.
-    bool quickReject(Body::id_t id1, Body::id_t id2) const {
-        const QuickShape &a = quickShapes[id1], &b = quickShapes[id2];
+    bool quickReject(const QuickShape* shapes, Body::id_t id1, Body::id_t id2) const {
+        const QuickShape &a = shapes[id1], &b = shapes[id2];
         if (a.radius > 0 && b.radius > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
             const Real r = sphereSphereReach * (a.radius + b.radius);
             return sphereSphereReach > 0 && (a.pos - b.pos).squaredNorm() > r * r;
