@@ -43,7 +43,7 @@ void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
 }
 
-bool InteractionLoop::prepareQuickReject() {
+bool InteractionLoop::prepareQuickReject(int threads) {
     Sphere sphereProbe;
     Facet facetProbe;
     const IGeomFunctor* ss = geomDispatcher->getFunctor(sphereProbe, sphereProbe).functor;
@@ -55,11 +55,10 @@ bool InteractionLoop::prepareQuickReject() {
     const long n = (long)bodies.size();
     quickShapes.resize(n);
     ShapeCache& cache = shapeCache;
-    if (cache.changes == bodies.changes && cache.writes == externalWrites() && cache.radius.size() == (size_t)n
-            && scene->positionsCurrent()) { // shapes unchanged: contiguous copies only
-        const Vector3r* pos = scene->positionMirror.pos.data();
-#pragma omp parallel for schedule(static)
-        for (long id = 0; id < n; ++id) quickShapes[id] = QuickShape{pos[id], cache.radius[id]};
+    quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.radius.size() == (size_t)n
+            && scene->positionsCurrent();
+    if (quickFromMirror) { // shapes unchanged: contiguous copies only (each thread makes its own if several)
+        if (threads == 1) fillQuickShapes(quickShapes);
     } else { // from the bodies; the radii (and facet markers) are kept for the next steps
         cache.writes = externalWrites();
         cache.changes = bodies.changes;
@@ -85,6 +84,14 @@ bool InteractionLoop::prepareQuickReject() {
         facetPlanes.push_back(FacetPlane{b.state->pos, b.state->ori * static_cast<const Facet&>(*b.shape).normal});
     }
     return true;
+}
+
+void InteractionLoop::fillQuickShapes(std::vector<QuickShape>& shapes) const {
+    const Vector3r* pos = scene->positionMirror.pos.data();
+    const Real* radius = shapeCache.radius.data();
+    const size_t n = shapeCache.radius.size();
+    shapes.resize(n);
+    for (size_t id = 0; id < n; ++id) shapes[id] = QuickShape{pos[id], radius[id]};
 }
 
 // A sphere whose center is out of reach of a facet's plane. The functor computes the distance in
@@ -121,7 +128,11 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     for (long k = 0; k < n; ++k) {
         const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
         const int ta = ownerOf(a, nBodies, threads), tb = ownerOf(b, nBodies, threads);
-        threadPairs[ta == tb || (a + b) % 2 == 0 ? ta : tb].push_back(k);
+        const size_t na = intrs.partnersOf(a).size(), nb = intrs.partnersOf(b).size();
+        int t = (a + b) % 2 == 0 ? ta : tb;    // across two ranges: alternate
+        if (ta == tb || nb > 4 * na + 16) t = ta; // b is a boundary (a facet touching many bodies): follow a
+        else if (na > 4 * nb + 16) t = tb;
+        threadPairs[t].push_back(k);
     }
     threadPairsFor = intrs.changes;
     threadPairsBodies = (size_t)nBodies;
@@ -139,13 +150,13 @@ void InteractionLoop::action() {
 
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
-    const bool quick = fastPath && prepareQuickReject();
-    std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
-    std::string error;
     int threads = 1;
 #ifdef _OPENMP
     threads = omp_get_max_threads();
 #endif
+    const bool quick = fastPath && prepareQuickReject(threads);
+    std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
+    std::string error;
     if (threadPairsFor != intrs.changes || threadPairsBodies != bodies.size() || (int)threadPairs.size() != threads) assignPairsToThreads(threads);
     if (quick && threads > 1) threadQuickShapes.resize(threads);
 #pragma omp parallel num_threads(threads)
@@ -157,7 +168,8 @@ void InteractionLoop::action() {
 #endif
     const QuickShape* shapes = quickShapes.data();
     if (quick && threads > 1) {
-        threadQuickShapes[first] = quickShapes;
+        if (quickFromMirror) fillQuickShapes(threadQuickShapes[first]);
+        else threadQuickShapes[first] = quickShapes;
         shapes = threadQuickShapes[first].data();
     }
     for (int list = first; list < threads; list += step) // (one list each unless fewer threads came)

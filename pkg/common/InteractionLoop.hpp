@@ -42,6 +42,8 @@ private:
     // With several threads, each reads its own copy (copied in sequence: the random reads of the
     // pairs then stay in the core's cache instead of fetching lines the other core just wrote).
     std::vector<std::vector<QuickShape>> threadQuickShapes;
+    bool quickFromMirror = false; // this step's array comes from the integrator's positions and cached radii
+    void fillQuickShapes(std::vector<QuickShape>& shapes) const;
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
     struct ShapeCache {
@@ -51,7 +53,7 @@ private:
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
-    bool prepareQuickReject(); // fills quickShapes; false if no functor makes the promise
+    bool prepareQuickReject(int threads); // fills quickShapes (or lets each thread fill its copy); false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair.
     bool quickReject(const QuickShape* shapes, Body::id_t id1, Body::id_t id2) const {
         const QuickShape &a = shapes[id1], &b = shapes[id2];
@@ -66,7 +68,8 @@ private:
     // Interactions (positions in O.interactions) per thread: each goes to a thread that integrates
     // one of its bodies (NewtonIntegrator splits the body ids in equal consecutive ranges), so that
     // the states it reads were written on the same core; pairs across two ranges alternate between
-    // their two threads. In container order within each list: one thread gives the serial order.
+    // their two threads, except pairs with a boundary (a body with many partners, e.g. a facet),
+    // which follow the other body (else the thread owning the boundaries would get most of them). In container order within each list: one thread gives the serial order.
     std::vector<std::vector<long>> threadPairs;
     long long threadPairsFor = -1; // O.interactions' change counter when built
     size_t threadPairsBodies = 0;
