@@ -25,13 +25,7 @@ G = 9.81
 E, NU, RHO = 1e7, 0.3, 1e3  # utils.defaultMaterial(): the material used when none is given
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def engines(gravity=(0, 0, 0), damping=0.0):

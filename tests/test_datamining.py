@@ -36,13 +36,7 @@ E, RHO = 1e7, 1e3  # the default material
 V1 = 4. / 3. * math.pi  # volume of a unit sphere
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def arr(v):

@@ -20,13 +20,7 @@ from yade.utils import PWaveTimeStep, sphere
 G = 9.81
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def dem_engines(gravity=(0, 0, 0), damping=0.0, verletDist=-0.5, **newton):

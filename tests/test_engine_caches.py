@@ -10,13 +10,7 @@ from yade import O, Vector3
 from yade.utils import sphere
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def makeScene(gap=0.05, pyRunner=None):

@@ -23,13 +23,7 @@ REPO = pathlib.Path(__file__).resolve().parent.parent
 LAUNCHER = REPO / 'yade'
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def run_script(tmp_path, body, timeout=120):

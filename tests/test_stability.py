@@ -44,13 +44,7 @@ NAN = float('nan')
 INF = float('inf')
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    O.reset()
-    yield
-    O.pause()
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 # ---------------------------------------------------------------------------------- helpers
