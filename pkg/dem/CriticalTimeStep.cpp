@@ -61,22 +61,26 @@ CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>&
     return best;
 }
 
-CriticalStep criticalTimeStep(const Scene& scene) {
+CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem) {
     const size_t n = scene.bodies.size();
     std::vector<Vector3r> kTrans(n, Vector3r::Zero()), kRot(n, Vector3r::Zero());
     Vector3r ct, cr;
-    for (const auto& I : scene.interactions) {
-        if (!I->isReal()) continue;
+    const InteractionContainer& intrs = scene.interactions;
+    for (size_t k = 0; k < intrs.size(); ++k) {
+        if (asLastLoopSawThem && !intrs.wasReal[k]) continue; // (a contiguous flag: most pairs are not touched)
+        const Interaction& I = *intrs[k];
+        if (!I.isReal()) continue;
         for (int side = 1; side <= 2; ++side)
-            if (contribution(*I, side, ct, cr)) {
-                const Body::id_t id = side == 1 ? I->id1 : I->id2;
+            if (contribution(I, side, ct, cr)) {
+                const Body::id_t id = side == 1 ? I.id1 : I.id2;
                 kTrans[id] += ct;
                 kRot[id] += cr;
             }
     }
     CriticalStep best;
-    for (const auto& b : scene.bodies)
-        if (b) lowest(*b, kTrans[b->id], kRot[b->id], best);
+    for (size_t id = 0; id < n; ++id)
+        if (!kTrans[id].isZero(0) || !kRot[id].isZero(0)) // bodies without contacts: nothing to read
+            if (const auto& b = scene.bodies[(Body::id_t)id]) lowest(*b, kTrans[id], kRot[id], best);
     return best;
 }
 

@@ -12,7 +12,9 @@ struct CriticalStep {
     int dof = -1;          // 0-2 translation x,y,z; 3-5 rotation
 };
 
-CriticalStep criticalTimeStep(const Scene& scene);
+// asLastLoopSawThem: only the interactions InteractionLoop found real in its last pass (its
+// contiguous flags; the contacts whose forces it computes), instead of asking each interaction.
+CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem = false);
 // The same for a few bodies only (those that just got a new contact): cost ∝ their contacts.
 CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& bodies);
 

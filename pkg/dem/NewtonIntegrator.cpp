@@ -52,7 +52,7 @@ void NewtonIntegrator::action() {
     // changed, otherwise only the bodies that got a new contact in this step (cheap).
     if (stabilityCheckPeriod > 0) {
         const bool full = s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt;
-        const CriticalStep crit = full ? criticalTimeStep(s) : criticalTimeStep(s, s.newContactBodies);
+        const CriticalStep crit = full ? criticalTimeStep(s, true) : criticalTimeStep(s, s.newContactBodies);
         lastCheckedDt = dt;
         if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     }
