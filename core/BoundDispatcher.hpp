@@ -34,6 +34,7 @@ public:
     std::vector<std::shared_ptr<Functor>> functorsBase() const override { return {functors.begin(), functors.end()}; }
     void postLoad() override { table.invalidate(); }
     BoundFunctor* getFunctor(const Shape& s) { return table.get(s.getClassIndex(), functors, "Shape"); }
+    void prepareTable() { table.fill(functors, "Shape"); } // then getFunctor() only reads
     void action() override; // updates the bounds of all bodies
 
 private:

@@ -28,6 +28,11 @@ std::vector<int> classChain(const std::string& family, int index);
 template <class F> class DispatchTable1D {
 public:
     void invalidate() { table.clear(); }
+    // Resolves every class of the family now, so that get() only reads (parallel loops).
+    void fill(const std::vector<std::shared_ptr<F>>& functors, const std::string& family) {
+        if (table.empty()) table.assign(ClassRegistry::instance().familySize(family), unresolved());
+        for (int i = 0; i < (int)table.size(); ++i) get(i, functors, family);
+    }
     F* get(int index, const std::vector<std::shared_ptr<F>>& functors, const std::string& family) {
         if (table.empty()) table.assign(ClassRegistry::instance().familySize(family), unresolved());
         if (index < 0 || index >= (int)table.size()) return nullptr;

@@ -28,27 +28,37 @@ bool InsertionSortCollider::needsRun() const {
 }
 
 void InsertionSortCollider::updateBounds() {
+    const BodyContainer& bodies = scene->bodies;
+    const long n = (long)bodies.size();
     Real minRadius = Inf;
-    for (const auto& b : scene->bodies)
+#pragma omp parallel for schedule(static) reduction(min : minRadius)
+    for (long id = 0; id < n; ++id) {
+        const Body* b = bodies[(Body::id_t)id].get();
         if (b && b->shape)
             if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
+    }
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     boundDispatcher->scene = scene;
-    boxes.assign(scene->bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false, false});
-    for (const auto& b : scene->bodies) {
+    boundDispatcher->prepareTable(); // the loop below only reads the table
+    for (const auto& f : boundDispatcher->functors)
+        if (f) f->scene = scene;
+    boxes.assign(bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false, false});
+    // each body on its own (the Bo1 functors write only the bound they are given)
+#pragma omp parallel for schedule(static)
+    for (long id = 0; id < n; ++id) {
+        Body* b = bodies[(Body::id_t)id].get();
         if (!b || !b->shape) continue;
         BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
         if (!f) { // no Bo1 functor for this shape: the body takes no part in collisions
             b->bound.reset();
             continue;
         }
-        f->scene = scene;
         f->go(*b->shape, b->bound, *b->state, *b);
         b->bound->min -= Vector3r::Constant(sweep);
         b->bound->max += Vector3r::Constant(sweep);
         b->bound->refPos = b->state->pos;
         b->bound->lastUpdateIter = scene->iter;
-        boxes[b->id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->isDynamic(), true};
+        boxes[id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->isDynamic(), true};
     }
 }
 
@@ -59,13 +69,14 @@ bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
     return true;
 }
 
-void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b, bool overlapStarts) {
+bool InsertionSortCollider::overlapNow(Body::id_t a, Body::id_t b) const {
     const Box &A = boxes[a], &B = boxes[b];
     const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic); // as Body::mayCollide
-    const bool overlap = mayCollide && boxesOverlap(A, B);
-    // The overlap began along this axis but not along all: nothing to create, and no potential
-    // interaction to drop (there was no overlap before either), so the lookup is skipped.
-    if (overlapStarts && !overlap) return;
+    return mayCollide && boxesOverlap(A, B);
+}
+
+void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b) {
+    const bool overlap = overlapNow(a, b);
     InteractionContainer& intrs = scene->interactions;
     const auto& I = intrs.find(a, b);
     if (overlap && !I) intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
@@ -73,15 +84,19 @@ void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b, bool ove
 }
 
 // Insertion sort (3.1.3): each element moves left past the larger ones; passing a bound of the
-// opposite kind means the overlap along this axis began or ended.
-void InsertionSortCollider::insertionSort(std::vector<Bound1D>& list) {
+// opposite kind means the overlap along this axis began or ended. The pairs whose interaction may
+// have to be created or dropped are appended to `inversions` (handled afterwards, in this order):
+// an overlap that begins along this axis but not along all needs nothing (there was no overlap
+// before either).
+void InsertionSortCollider::insertionSort(std::vector<Bound1D>& list, std::vector<std::pair<Body::id_t, Body::id_t>>& inversions) const {
     for (size_t i = 1; i < list.size(); ++i) {
         const Bound1D current = list[i];
         size_t j = i;
         while (j > 0 && current.coord < list[j - 1].coord) {
             const Bound1D& passed = list[j - 1];
             // a lower bound moving below an upper one: the overlap along this axis begins; the converse: it ends
-            if (passed.isMin != current.isMin && passed.id != current.id) handleInversion(current.id, passed.id, current.isMin);
+            if (passed.isMin != current.isMin && passed.id != current.id && !(current.isMin && !overlapNow(current.id, passed.id)))
+                inversions.emplace_back(current.id, passed.id);
             list[j] = list[j - 1];
             --j;
         }
@@ -168,10 +183,16 @@ void InsertionSortCollider::action() {
         lastBodyChanges = bodies.changes;
         return;
     }
+    // the three axes sort in parallel (they only read the boxes); the interactions are then created
+    // and dropped serially, axis by axis in sort order: the same sequence as one sort after the other
+    std::vector<std::pair<Body::id_t, Body::id_t>> inversions[3];
+#pragma omp parallel for schedule(dynamic, 1)
     for (int ax = 0; ax < 3; ++ax) {
         for (auto& e : axes[ax]) e.coord = e.isMin ? boxes[e.id].min[ax] : boxes[e.id].max[ax];
-        insertionSort(axes[ax]);
+        insertionSort(axes[ax], inversions[ax]);
     }
+    for (const auto& list : inversions)
+        for (const auto& p : list) handleInversion(p.first, p.second);
 }
 
 } // namespace yade

@@ -56,9 +56,10 @@ private:
     bool needsRun() const;
     void updateBounds();
     void rebuild();
-    void insertionSort(std::vector<Bound1D>& list);
+    void insertionSort(std::vector<Bound1D>& list, std::vector<std::pair<Body::id_t, Body::id_t>>& inversions) const;
+    bool overlapNow(Body::id_t a, Body::id_t b) const; // bounds overlap and the bodies may collide
     // The overlap of the bounds of a and b may have changed: create or drop their potential interaction.
-    void handleInversion(Body::id_t a, Body::id_t b, bool overlapStarts);
+    void handleInversion(Body::id_t a, Body::id_t b);
     bool boundsOverlap(const Body& a, const Body& b) const;
     static bool boxesOverlap(const Box& a, const Box& b) {
         for (int i = 0; i < 3; ++i)
