@@ -1,4 +1,5 @@
 #include <core/Scene.hpp>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -19,7 +20,9 @@ static std::string nowString(const char* fmt) {
 
 bool Scene::timingEnabled = false;
 
-Scene::Scene() {
+static std::atomic<long long> sceneCount{0};
+
+Scene::Scene() : serial(++sceneCount) {
     // id: unique per run (time, pid-like random suffix); d.id adds a description later.
     std::random_device rd;
     char suffix[16];

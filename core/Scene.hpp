@@ -26,6 +26,9 @@ public:
     bool trackEnergy = false;
     // O.timingEnabled: engines accumulate execTime/execCount (one clock read per engine run).
     static bool timingEnabled;
+    // Unique per Scene object: engines that keep data between steps rebuild it when they find
+    // themselves in another scene (engine objects can be reused after O.reset()).
+    const long long serial;
     std::map<std::string, std::string> tags;
     // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
     // the integrator's stability guard), cleared at the start of each step.

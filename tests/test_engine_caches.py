@@ -82,3 +82,17 @@ def test_positions_of_the_integrator_match_the_states():
     O.run(10500, True)
     assert touching() or O.bodies[1].state.vel[0] > 0  # in contact, or already bounced back
     assert O.bodies[0].state.vel[0] < 0  # body 0 was pushed
+
+
+def test_engines_reused_in_a_new_scene_start_afresh():
+    """The same engine objects after O.reset(), in a scene built the same way (same counters) but
+    with bigger spheres: their cached radii, boxes and thread lists are not reused."""
+    makeScene(gap=0.05)
+    engines = O.engines
+    O.reset()
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((0, 0, 0), .04), sphere((0.07, 0, 0), .04), sphere((1, 1, 1), .01)])  # overlapping
+    O.engines = engines
+    O.dt = 1e-6
+    O.step()
+    assert touching()

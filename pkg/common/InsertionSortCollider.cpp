@@ -166,6 +166,10 @@ void InsertionSortCollider::postLoad() {
 }
 
 void InsertionSortCollider::action() {
+    if (scene->serial != lastScene) { // used in another scene before (engines kept across O.reset()): start afresh
+        if (lastScene >= 0) lastBodyChanges = -1;
+        lastScene = scene->serial;
+    }
     if (verifyLists) { // lists loaded from a file must name existing bodies with bounds
         verifyLists = false;
         for (const auto& axis : axes)

@@ -49,6 +49,7 @@ private:
     };
     std::vector<Box> boxes;
     long long lastBodyChanges = -1;
+    long long lastScene = -1; // Scene::serial of the scene of the last run (not saved)
     Real sweep = 0;
     std::vector<Real> savedCoords;
     std::vector<int> savedIds;

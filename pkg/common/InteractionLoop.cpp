@@ -55,13 +55,14 @@ bool InteractionLoop::prepareQuickReject(int threads) {
     const long n = (long)bodies.size();
     quickShapes.resize(n);
     ShapeCache& cache = shapeCache;
-    quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.radius.size() == (size_t)n
-            && scene->positionsCurrent();
+    quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.scene == scene->serial
+            && cache.radius.size() == (size_t)n && scene->positionsCurrent();
     if (quickFromMirror) { // shapes unchanged: contiguous copies only (each thread makes its own if several)
         if (threads == 1) fillQuickShapes(quickShapes);
     } else { // from the bodies; the radii (and facet markers) are kept for the next steps
         cache.writes = externalWrites();
         cache.changes = bodies.changes;
+        cache.scene = scene->serial;
         cache.radius.assign(n, NaN);
         cache.facetIds.clear();
         const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
@@ -135,7 +136,9 @@ void InteractionLoop::assignPairsToThreads(int threads) {
         threadPairs[t].push_back(k);
     }
     threadPairsFor = intrs.changes;
+    threadPairsScene = scene->serial;
     threadPairsBodies = (size_t)nBodies;
+    threadPairsCount = (size_t)n; // the lists cover exactly 0 .. n-1
 }
 
 void InteractionLoop::action() {
@@ -157,7 +160,9 @@ void InteractionLoop::action() {
     const bool quick = fastPath && prepareQuickReject(threads);
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
-    if (threadPairsFor != intrs.changes || threadPairsBodies != bodies.size() || (int)threadPairs.size() != threads) assignPairsToThreads(threads);
+    if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
+            || threadPairsCount != intrs.size() || (int)threadPairs.size() != threads)
+        assignPairsToThreads(threads);
     if (quick && threads > 1) threadQuickShapes.resize(threads);
 #pragma omp parallel num_threads(threads)
     {

@@ -49,7 +49,7 @@ private:
     struct ShapeCache {
         std::vector<Real> radius;
         std::vector<Body::id_t> facetIds;
-        long long changes = -1, writes = -1;
+        long long changes = -1, writes = -1, scene = -1; // bodies.changes, externalWrites(), Scene::serial
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
@@ -71,8 +71,8 @@ private:
     // their two threads, except pairs with a boundary (a body with many partners, e.g. a facet),
     // which follow the other body (else the thread owning the boundaries would get most of them). In container order within each list: one thread gives the serial order.
     std::vector<std::vector<long>> threadPairs;
-    long long threadPairsFor = -1; // O.interactions' change counter when built
-    size_t threadPairsBodies = 0;
+    long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
+    size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then
     void assignPairsToThreads(int threads);
 };
 
