@@ -323,6 +323,24 @@ def test_torque_free_spin_is_preserved_and_rotates_orientation(damping, fixed):
     assert s.pos.norm() == 0 and s.vel.norm() == 0
 
 
+def test_large_rotation_steps_and_a_non_unit_orientation():
+    """Rotations of 0.05 rad per step (beyond the small-angle series) compose exactly, and an
+    orientation set far from unit length is brought back to it at the first step."""
+    O.bodies.append(sphere((0, 0, 0), 0.1, material=mat()))
+    w = Vector3(0.0, 0.0, 50.0)
+    s = O.bodies[0].state
+    s.angVel = w
+    s.ori = Quaternion(Vector3(1, 0, 0), 0.5)
+    for i in range(4):
+        s.ori[i] *= 3.0  # |ori| = 3
+    O.engines = dem_engines(damping=0)
+    O.dt, n = 1e-3, 40  # 0.05 rad per step, 2 rad in all
+    O.run(n, True)
+    assert sum(x * x for x in s.ori) == pytest.approx(1, abs=1e-15)
+    expected = Quaternion(Vector3(0, 0, 1), 50.0 * n * 1e-3) * Quaternion(Vector3(1, 0, 0), 0.5)
+    assert s.ori.angularDistance(expected) < 1e-12
+
+
 # ====================================================================== 6. damping
 
 @pytest.mark.parametrize('gravityEngine', [False, True])

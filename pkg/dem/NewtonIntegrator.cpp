@@ -128,9 +128,11 @@ void NewtonIntegrator::action() {
             sinCosHalf(angle, sinHalf, cosHalf);
             const Real k = sinHalf / angVelNorm;
             const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * st.ori;
-            // back to unit length: |q|² = 1 + e with e of the order of the rounding, and
-            // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²), exact in double precision
-            st.ori.coeffs() = q.coeffs() * (0.5 * (3 - q.coeffs().squaredNorm()));
+            // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
+            // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
+            // length from Python gets the exact division)
+            const Real n2 = q.coeffs().squaredNorm();
+            st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
     s.positionMirror.iter = s.iter;
