@@ -200,7 +200,10 @@ def test_03_saves_the_loading_history(tutorial03):
     assert i[0] >= 5000  # the plate comes after the deposition (at least 5000 steps)
     assert int(it) <= i[-1] + 200
     k = np.argmax(np.abs(Fz))
-    assert abs(Fz[k]) >= MAXLOAD
+    # the check that reverses the plate saw more than maxLoad; rows are written every 200 steps,
+    # so when the check came within 200 steps of the crossing the highest row can be just below it
+    # (the force grows by a few % of maxLoad per 200 steps near the peak)
+    assert abs(Fz[k]) >= 0.9 * MAXLOAD
     # stopped when the load fell below minLoad (checked every 2 s: the last row, up to 199 steps
     # earlier, is below it or close to it)
     assert abs(float(fend)) < MINLOAD
