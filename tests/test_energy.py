@@ -41,15 +41,7 @@ G = 9.81
 ALL_TERMS = {'kinetic', 'gravWork', 'nonviscDamp', 'elastPotential', 'plastDissip'}
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    setNumThreads(1)
-    O.reset()
-    yield
-    O.pause()
-    setNumThreads(1)
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 def engines(gravity=(0, 0, 0), damping=0.0):

@@ -34,15 +34,7 @@ FORMATS = ['scene.yade', 'scene.xml', 'scene.yade.gz', 'scene.xml.gz', 'scene.ya
 BINARY_MAGIC = b'YADE-CLONE-BINARY\n'
 
 
-@pytest.fixture(autouse=True)
-def fresh_scene():
-    O.pause()
-    setNumThreads(1)
-    O.reset()
-    yield
-    O.pause()
-    setNumThreads(1)
-    O.reset()
+pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 
 # ====================================================================== helpers
