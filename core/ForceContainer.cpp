@@ -1,30 +1,43 @@
+#include <algorithm>
 #include <core/ForceContainer.hpp>
+#include <cstring>
 
 namespace yade {
 
 void ForceContainer::setThreads(int n) {
+    if (n <= 1 && inSums && !anyPermanent) { // one buffer will be the sum: it takes what was gathered
+        for (size_t i = 0; i < summedForce.size(); ++i) {
+            force[0][i] += summedForce[i];
+            torque[0][i] += summedTorque[i];
+        }
+        inSums = false;
+        clean = false;
+    }
     force.resize(n > 0 ? n : 1);
     torque.resize(force.size());
     resize(summedForce.size());
 }
 
 void ForceContainer::resize(size_t n) {
+    if (n == summedForce.size() && force.back().size() == n) return; // (called at every step)
     for (auto* v : {&summedForce, &summedTorque, &permForce, &permTorque}) v->resize(n, Vector3r::Zero());
     for (size_t t = 0; t < force.size(); ++t) {
         force[t].resize(n, Vector3r::Zero());
         torque[t].resize(n, Vector3r::Zero());
     }
-    synced = false;
+    synced = clean = false;
 }
 
 void ForceContainer::addPermForce(int id, const Vector3r& f) {
     permForce[id] += f;
+    if (inSums) summedForce[id] += f; // (the sums got the permanent forces when this step's first sync made them)
     anyPermanent = true;
     synced = false;
 }
 
 void ForceContainer::addPermTorque(int id, const Vector3r& t) {
     permTorque[id] += t;
+    if (inSums) summedTorque[id] += t;
     anyPermanent = true;
     synced = false;
 }
@@ -36,25 +49,51 @@ void ForceContainer::sync() {
         return;
     }
     const long n = (long)summedForce.size();
-    // each body's sum is done in thread-buffer order, so the result does not depend on the split
-#pragma omp parallel for schedule(static) if (n > 2000)
-    for (long i = 0; i < n; ++i) {
-        Vector3r f = force[0][i], t = torque[0][i];
-        for (size_t th = 1; th < force.size(); ++th) {
-            f += force[th][i];
-            t += torque[th][i];
+    const int nBuffers = (int)force.size();
+    // each body's sum is done in thread-buffer order, so the result does not depend on the split;
+    // split by bodies as the integrator (static): each thread sums and zeroes the entries it reads next
+#pragma omp parallel if (n > 2000)
+    {
+        long begin = 0, end = n;
+#ifdef _OPENMP
+        const long parts = omp_get_num_threads(), part = omp_get_thread_num(), q = n / parts, r = n % parts;
+        begin = part * q + std::min(part, r);
+        end = begin + q + (part < r ? 1 : 0);
+#endif
+        Vector3r* sf = summedForce.data();
+        Vector3r* st = summedTorque.data();
+        const Vector3r* pf = permForce.data();
+        const Vector3r* pt = permTorque.data();
+        const bool add = inSums, perm = anyPermanent && !inSums;
+        for (long i = begin; i < end; ++i) {
+            Vector3r f = force[0][i], t = torque[0][i];
+            for (int th = 1; th < nBuffers; ++th) {
+                f += force[th][i];
+                t += torque[th][i];
+            }
+            if (add) {
+                sf[i] += f;
+                st[i] += t;
+                continue;
+            }
+            if (perm) {
+                f += pf[i];
+                t += pt[i];
+            }
+            sf[i] = f;
+            st[i] = t;
         }
-        if (anyPermanent) {
-            f += permForce[i];
-            t += permTorque[i];
+        for (int th = 0; th < nBuffers; ++th) { // (plain zero bytes: the same as Vector3r::Zero())
+            std::memset(static_cast<void*>(force[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
+            std::memset(static_cast<void*>(torque[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
         }
-        summedForce[i] = f;
-        summedTorque[i] = t;
     }
-    synced = true;
+    gathered();
 }
 
 void ForceContainer::reset() {
+    inSums = synced = false;
+    if (clean) return; // the last sync zeroed the buffers and nothing was added since
     const long n = (long)summedForce.size();
     const size_t nThreads = force.size();
     // split by bodies as sync() and the integrator: each thread clears the entries it reads next
@@ -65,7 +104,7 @@ void ForceContainer::reset() {
             force[th][i] = Vector3r::Zero();
             torque[th][i] = Vector3r::Zero();
         }
-    synced = false;
+    clean = true;
 }
 
 } // namespace yade

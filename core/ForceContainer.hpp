@@ -1,5 +1,8 @@
 // O.forces: generalized forces accumulated during one step (1.2.1). Each OpenMP thread adds
 // into its own buffer; sync() sums the buffers in thread order, so a run is reproducible.
+// With several threads (or permanent forces) sync() moves the buffers' content into the sums and
+// zeroes them while their cache lines are at hand, so that reset() has nothing left to clear:
+// the sums then accumulate whatever later syncs of the same step gather.
 #pragma once
 #include <lib/base/Math.hpp>
 #include <vector>
@@ -56,8 +59,10 @@ private:
     // cache line is not passed back and forth between cores.
     void markUnsynced() {
         if (synced) synced = false;
+        if (clean) clean = false;
     }
     bool single() const { return force.size() == 1 && !anyPermanent; }
+    void gathered() { inSums = clean = synced = true; }
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();
@@ -68,6 +73,8 @@ private:
     std::vector<std::vector<Vector3r>> force, torque; // [thread][body]
     std::vector<Vector3r> summedForce, summedTorque, permForce, permTorque;
     bool synced = true, anyPermanent = false;
+    bool inSums = false; // the sums hold what this step's syncs gathered (buffers zeroed since)
+    bool clean = false;  // every buffer is zero
 };
 
 } // namespace yade

@@ -80,13 +80,13 @@ with open(out, "w") as f:
 '''
 
 
-def run_scene(tmp_path, fast, steps, factor):
+def run_scene(tmp_path, fast, steps, factor, threads=1):
     script = tmp_path / "fastpath_scene.py"
     script.write_text(SCENE)
     out = tmp_path / ("state_%d_%g.json" % (fast, factor))
     env = dict(os.environ)
     env.pop("OMP_NUM_THREADS", None)
-    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", "-j", "1", str(script),
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", "-j", str(threads), str(script),
                         "1" if fast else "0", str(out), str(steps), repr(factor)],
                        capture_output=True, text=True, timeout=600, env=env, cwd=str(tmp_path))
     assert r.returncode == 0 and out.exists(), "scene failed:\n%s\n%s" % (r.stdout[-3000:], r.stderr[-3000:])
@@ -100,11 +100,13 @@ def max_abs_diff(a, b):
     return max((abs(x - y) for u, v in zip(a, b) for x, y in zip(u, v)), default=0.0)
 
 
-@pytest.mark.parametrize("factor", [1.0, 1.5], ids=["touching", "detectionFactor1.5"])
-def test_fast_path_gives_the_same_trajectories_as_the_general_path(tmp_path, factor):
+# (the fast path includes the skin: pairs certainly still apart are not even tested; with two
+# threads each thread has its own lists and skin)
+@pytest.mark.parametrize("factor,threads", [(1.0, 1), (1.5, 1), (1.0, 2)], ids=["touching", "detectionFactor1.5", "touching-2threads"])
+def test_fast_path_gives_the_same_trajectories_as_the_general_path(tmp_path, factor, threads):
     steps = 1500
-    fast = run_scene(tmp_path, True, steps, factor)
-    general = run_scene(tmp_path, False, steps, factor)
+    fast = run_scene(tmp_path, True, steps, factor, threads)
+    general = run_scene(tmp_path, False, steps, factor, threads)
     # the scene is not trivial: spheres fell, contacts formed, and there were potential pairs
     # still apart for the fast path to reject
     assert fast["moved"] > 0.01

@@ -403,6 +403,54 @@ def test_force_resetter_zeroes_forces():
     assert vec(O.forces.t(0)) == (0, 0, 0)
 
 
+@pytest.mark.parametrize("threads", [1, 2])
+def test_forces_added_after_a_read_are_added_to_what_was_read(threads):
+    # with several threads a read sums the per-thread buffers into the totals and zeroes them;
+    # what is added afterwards must still add up, permanent forces included
+    setNumThreads(threads)
+    O.bodies.append([sphere((0, 0, 0), 1) for i in range(3000)])  # enough bodies for a parallel sum
+    O.forces.addF(7, (1, 2, 3))
+    O.forces.addT(7, (0, 0, 1))
+    assert vec(O.forces.f(7)) == (1, 2, 3)
+    O.forces.addF(7, (0.5, 0, 0))
+    O.forces.addT(7, (0, 0, 2))
+    assert vec(O.forces.f(7)) == (1.5, 2, 3)
+    assert vec(O.forces.t(7)) == (0, 0, 3)
+    O.forces.addF(7, (0, 0, 10), permanent=True)
+    assert vec(O.forces.f(7)) == (1.5, 2, 13)
+    assert vec(O.forces.f(8)) == (0, 0, 0)
+    setNumThreads(3 - threads)  # the totals survive a change of the thread count
+    assert vec(O.forces.f(7)) == (1.5, 2, 13)
+    assert vec(O.forces.t(7)) == (0, 0, 3)
+    O.engines = [ForceResetter()]
+    O.step()  # the per-step forces go, the permanent one stays
+    assert vec(O.forces.f(7)) == (0, 0, 10)
+    assert vec(O.forces.t(7)) == (0, 0, 0)
+    O.forces.addF(7, (1, 0, 0))
+    O.step()
+    assert vec(O.forces.f(7)) == (0, 0, 10)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_forces_of_a_step_are_readable_after_it(threads):
+    # two touching spheres pressed together, with gravity: after each step O.forces holds the
+    # contact force of that step (read after the integrator has summed and cleared the buffers)
+    setNumThreads(threads)
+    O.bodies.append([sphere((0, 0, 0), 1, fixed=True), sphere((0, 0, 1.9), 1)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(gravity=(0, 0, -10))]
+    O.dt = 1e-6
+    for i in range(3):
+        O.step()
+        i = O.interactions[0, 1]
+        fn = i.phys.normalForce
+        assert vec(O.forces.f(1)) == pytest.approx((0, 0, abs(fn[2])), abs=1e-9 * abs(fn[2]))  # pushed up
+        assert vec(O.forces.f(0)) == pytest.approx((0, 0, -abs(fn[2])), abs=1e-9 * abs(fn[2]))
+        assert abs(fn[2]) > 1e3
+
+
 # ------------------------------------------------------------------ O.tags, O.periodic, O.dt
 
 def test_tags_id_and_d_id_exist_and_are_strings():

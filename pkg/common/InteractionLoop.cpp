@@ -58,7 +58,7 @@ bool InteractionLoop::prepareQuickReject(int threads) {
     quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.scene == scene->serial
             && cache.radius.size() == (size_t)n && scene->positionsCurrent();
     if (quickFromMirror) { // shapes unchanged: contiguous copies only (each thread makes its own if several)
-        if (threads == 1) fillQuickShapes(quickShapes);
+        if (threads == 1) skinDisplacement2 = fillQuickShapes(quickShapes, skin.refPos.size() == (size_t)n ? skin.refPos.data() : nullptr);
     } else { // from the bodies; the radii (and facet markers) are kept for the next steps
         cache.writes = externalWrites();
         cache.changes = bodies.changes;
@@ -87,18 +87,54 @@ bool InteractionLoop::prepareQuickReject(int threads) {
     return true;
 }
 
-void InteractionLoop::fillQuickShapes(std::vector<QuickShape>& shapes) const {
+Real InteractionLoop::fillQuickShapes(std::vector<QuickShape>& shapes, const Vector3r* ref) const {
     const Vector3r* pos = scene->positionMirror.pos.data();
     const Real* radius = shapeCache.radius.data();
     const size_t n = shapeCache.radius.size();
     shapes.resize(n);
-    for (size_t id = 0; id < n; ++id) shapes[id] = QuickShape{pos[id], radius[id]};
+    Real max2 = 0;
+    for (size_t id = 0; id < n; ++id) {
+        shapes[id] = QuickShape{pos[id], radius[id]};
+        if (ref) max2 = std::max(max2, (pos[id] - ref[id]).squaredNorm()); // (holes: NaN, ignored)
+    }
+    return max2;
+}
+
+void InteractionLoop::prepareSkin(bool quick) {
+    skin.active = skin.fresh = false;
+    if (!quick) {
+        skin.pairsBuild = -1;
+        return;
+    }
+    const size_t n = quickShapes.size();
+    const bool keep = quickFromMirror && skin.pairsBuild == threadPairsBuild && skin.refPos.size() == n
+            && skin.facetPlanes == facetPlanes && skin.sphereSphereReach == sphereSphereReach && skin.facetSphereReach == facetSphereReach;
+    skin.active = true;
+    if (keep) return;
+    // a new epoch: positions now are the reference; every pair is tested in this step
+    skin.fresh = true;
+    const Vector3r* pos = quickFromMirror ? scene->positionMirror.pos.data() : nullptr; // (else quickShapes holds them)
+    skin.refPos.resize(n);
+    Real scale = 0;
+    for (size_t id = 0; id < n; ++id) {
+        skin.refPos[id] = pos ? pos[id] : quickShapes[id].pos;
+        const Real extent = skin.refPos[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
+        if (extent > scale) scale = extent; // (NaN: ignored)
+    }
+    skin.tolerance = 1e-11 * scale;
+    skin.gap.resize(threadPairs.size());
+    skin.todo.resize(threadPairs.size());
+    for (size_t list = 0; list < threadPairs.size(); ++list) skin.gap[list].assign(threadPairs[list].size(), -Inf);
+    skin.facetPlanes = facetPlanes;
+    skin.sphereSphereReach = sphereSphereReach;
+    skin.facetSphereReach = facetSphereReach;
+    skin.pairsBuild = threadPairsBuild;
 }
 
 // A sphere whose center is out of reach of a facet's plane. The functor computes the distance in
 // the facet's frame, this in global coordinates: a relative margin of 1e-12 for the rounding
 // leaves the borderline cases to the functor.
-bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b) const {
+bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b, Real& gap) const {
     const bool aFacet = a.radius < 0;
     const QuickShape& sphere = aFacet ? b : a;
     const Real facetCode = aFacet ? a.radius : b.radius;
@@ -106,7 +142,9 @@ bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b
     const FacetPlane& plane = facetPlanes[(size_t)(-1 - facetCode)];
     const Vector3r d = sphere.pos - plane.point;
     const Real reach = facetSphereReach * sphere.radius;
-    return std::abs(plane.normal.dot(d)) > reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach); // false for NaN
+    const Real distance = std::abs(plane.normal.dot(d)), limit = reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach);
+    gap = distance - limit;
+    return distance > limit; // false for NaN
 }
 
 // Written only when it changes: the flags of both threads' interactions share cache lines, and
@@ -139,6 +177,7 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     threadPairsScene = scene->serial;
     threadPairsBodies = (size_t)nBodies;
     threadPairsCount = (size_t)n; // the lists cover exactly 0 .. n-1
+    ++threadPairsBuild;
 }
 
 void InteractionLoop::action() {
@@ -163,6 +202,9 @@ void InteractionLoop::action() {
     if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
             || threadPairsCount != intrs.size() || (int)threadPairs.size() != threads)
         assignPairsToThreads(threads);
+    prepareSkin(quick);
+    const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos.data() : nullptr; // (D = 0 in a fresh epoch)
+    if (!skinRef) skinDisplacement2 = 0;
     if (quick && threads > 1) threadQuickShapes.resize(threads);
 #pragma omp parallel num_threads(threads)
     {
@@ -172,14 +214,39 @@ void InteractionLoop::action() {
     step = omp_get_num_threads();
 #endif
     const QuickShape* shapes = quickShapes.data();
+    Real displacement2 = skinDisplacement2; // D², the same in every thread (the same arithmetic on the same data)
     if (quick && threads > 1) {
-        if (quickFromMirror) fillQuickShapes(threadQuickShapes[first]);
+        if (quickFromMirror) displacement2 = fillQuickShapes(threadQuickShapes[first], skinRef);
         else threadQuickShapes[first] = quickShapes;
         shapes = threadQuickShapes[first].data();
     }
-    for (int list = first; list < threads; list += step) // (one list each unless fewer threads came)
-    for (long k : threadPairs[list]) {
-        if (quick && !intrs.wasReal[k] && quickReject(shapes, intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])) continue; // still apart
+    const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
+    for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
+    const std::vector<long>& pairs = threadPairs[list];
+    Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    // the entries to test: all, or with the skin those not certainly beyond reach since their
+    // last test (gathered without branches: which ones are skipped is unpredictable)
+    size_t count = pairs.size();
+    const unsigned* todo = nullptr;
+    if (gaps) {
+        std::vector<unsigned>& entries = skin.todo[list];
+        entries.resize(pairs.size());
+        count = 0;
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            entries[count] = (unsigned)i;
+            count += !(gaps[i] > skipAbove);
+        }
+        todo = entries.data();
+    }
+    for (size_t j = 0; j < count; ++j) {
+        const size_t i = todo ? todo[j] : j;
+        const long k = pairs[i];
+        Real gap;
+        if (quick && !intrs.wasReal[k] && quickReject(shapes, intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
+            if (gaps) gaps[i] = gap - twiceD;
+            continue; // still apart
+        }
+        if (gaps) gaps[i] = -Inf; // tested again at the next step
         Interaction& I = *intrs[(size_t)k];
         const Body* b1 = bodies[I.id1].get();
         const Body* b2 = bodies[I.id2].get();
@@ -227,6 +294,7 @@ void InteractionLoop::action() {
         }
         if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
         setWasReal(intrs, k, I.isReal());
+    }
     }
     }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);

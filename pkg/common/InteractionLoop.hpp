@@ -37,13 +37,17 @@ private:
     };
     struct FacetPlane {
         Vector3r point, normal; // a point of the plane, unit normal (global)
+        bool operator==(const FacetPlane& o) const { return point == o.point && normal == o.normal; }
     };
     std::vector<QuickShape> quickShapes;
     // With several threads, each reads its own copy (copied in sequence: the random reads of the
     // pairs then stay in the core's cache instead of fetching lines the other core just wrote).
     std::vector<std::vector<QuickShape>> threadQuickShapes;
     bool quickFromMirror = false; // this step's array comes from the integrator's positions and cached radii
-    void fillQuickShapes(std::vector<QuickShape>& shapes) const;
+    Real skinDisplacement2 = 0;   // with one thread: D² of the skin (below), found while filling quickShapes
+    // Copies the integrator's positions and the cached radii into shapes; returns the largest
+    // squared distance of a body from ref (0 without ref).
+    Real fillQuickShapes(std::vector<QuickShape>& shapes, const Vector3r* ref) const;
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
     struct ShapeCache {
@@ -54,16 +58,40 @@ private:
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
     bool prepareQuickReject(int threads); // fills quickShapes (or lets each thread fill its copy); false if no functor makes the promise
-    // True when the Ig2 functor would certainly return false for this potential pair.
-    bool quickReject(const QuickShape* shapes, Body::id_t id1, Body::id_t id2) const {
+    // True when the Ig2 functor would certainly return false for this potential pair; gap is
+    // then how far the pair is beyond the functor's reach (distance of the centres, or of the
+    // sphere's centre from the facet's plane, minus the reach).
+    bool quickReject(const QuickShape* shapes, Body::id_t id1, Body::id_t id2, Real& gap) const {
         const QuickShape &a = shapes[id1], &b = shapes[id2];
         if (a.radius > 0 && b.radius > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
             const Real r = sphereSphereReach * (a.radius + b.radius);
-            return sphereSphereReach > 0 && (a.pos - b.pos).squaredNorm() > r * r;
+            const Real d2 = (a.pos - b.pos).squaredNorm();
+            if (!(sphereSphereReach > 0 && d2 > r * r)) return false;
+            gap = std::sqrt(d2) - r;
+            return true;
         }
-        return (a.radius < 0 || b.radius < 0) && facetSphereReject(a, b);
+        return (a.radius < 0 || b.radius < 0) && facetSphereReject(a, b, gap);
     }
-    bool facetSphereReject(const QuickShape& a, const QuickShape& b) const;
+    bool facetSphereReject(const QuickShape& a, const QuickShape& b, Real& gap) const;
+    // The skin of the fast path (Verlet lists): a potential pair found a gap g beyond reach while
+    // every body was within D of its position at the start of the epoch cannot come within reach
+    // as long as every body stays within D' with 2D + 2D' < g (each body moved at most D + D'
+    // since). Each entry of a thread's list keeps g - 2D from its last test, and is skipped while
+    // that exceeds 2D' (plus a rounding margin): one contiguous read instead of the two bodies'
+    // positions. An epoch ends when the interactions, the bodies, anything written from Python,
+    // a facet's plane or the functors' reach change.
+    struct Skin {
+        std::vector<Vector3r> refPos;        // each body's position at the start of the epoch
+        std::vector<std::vector<Real>> gap;  // per thread list, per entry: g - 2D (-Inf: test the pair)
+        std::vector<std::vector<unsigned>> todo; // per thread list: the entries tested in this step
+        std::vector<FacetPlane> facetPlanes; // facet planes at the start of the epoch
+        Real sphereSphereReach = NaN, facetSphereReach = NaN;
+        Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
+        long long pairsBuild = -1;           // threadPairsBuild when the epoch began
+        bool active = false;                 // used in this step
+        bool fresh = false;                  // the epoch begins in this step (D = 0, every pair tested)
+    } skin;
+    void prepareSkin(bool quick);
     void warnMissingIg2(const Shape& a, const Shape& b);
     // Interactions (positions in O.interactions) per thread: each goes to a thread that integrates
     // one of its bodies (NewtonIntegrator splits the body ids in equal consecutive ranges), so that
@@ -72,6 +100,7 @@ private:
     // which follow the other body (else the thread owning the boundaries would get most of them). In container order within each list: one thread gives the serial order.
     std::vector<std::vector<long>> threadPairs;
     long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
+    long long threadPairsBuild = 0;                         // incremented by every rebuild
     size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then
     void assignPairsToThreads(int threads);
 };
