@@ -38,26 +38,28 @@ void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep&
         const Real K = i < 3 ? kt[i] : kr[i - 3];
         const Real m = i < 3 ? s.mass : s.inertia[i - 3];
         if (K <= 0 || (s.blockedDOFsMask & (1 << i))) continue;
-        const Real dt = std::sqrt(2.0) * std::sqrt(m / K); // (3.5.18)
-        if (dt < best.dt) best = CriticalStep{dt, b.id, i};
+        const CriticalStep c{std::sqrt(2.0) * std::sqrt(m / K), b.id, i}; // (3.5.18)
+        if (c.before(best)) best = c;
     }
 }
 } // namespace
 
+void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best) {
+    if (!scene.bodies.exists(id)) return;
+    Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
+    for (const auto& partner : scene.interactions.partnersOf(id)) {
+        const Interaction* I = partner.second;
+        if (I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
+            kt += ct;
+            kr += cr;
+        }
+    }
+    lowest(*scene.bodies[id], kt, kr, best);
+}
+
 CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& ids) {
     CriticalStep best;
-    for (Body::id_t id : ids) {
-        if (!scene.bodies.exists(id)) continue;
-        Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
-        for (const auto& partner : scene.interactions.partnersOf(id)) {
-            const Interaction* I = partner.second;
-            if (I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
-                kt += ct;
-                kr += cr;
-            }
-        }
-        lowest(*scene.bodies[id], kt, kr, best);
-    }
+    for (Body::id_t id : ids) criticalStepOfBody(scene, id, best);
     return best;
 }
 

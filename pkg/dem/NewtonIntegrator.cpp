@@ -49,13 +49,13 @@ void NewtonIntegrator::action() {
         dampId = s.energy.term("nonviscDamp", true);
     }
     // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
-    // changed, otherwise only the bodies that got a new contact in this step (cheap).
-    if (stabilityCheckPeriod > 0) {
-        const bool full = s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt;
-        const CriticalStep crit = full ? criticalTimeStep(s, true) : criticalTimeStep(s, s.newContactBodies);
-        lastCheckedDt = dt;
-        if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
-    }
+    // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
+    CriticalStep crit;
+    const bool full = stabilityCheckPeriod > 0 && (s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt);
+    const std::vector<Body::id_t>& fresh = s.newContactBodies;
+    const bool checkFresh = stabilityCheckPeriod > 0 && !full && !fresh.empty();
+    if (stabilityCheckPeriod > 0) lastCheckedDt = dt;
+    if (full) crit = criticalTimeStep(s, true);
     // the members as constants, so that the compiler keeps them in registers across the stores below
     const long n = (long)s.bodies.size();
     const Vector3r* forces = s.forces.forceData();
@@ -69,7 +69,18 @@ void NewtonIntegrator::action() {
     const long long writesBefore = externalWrites();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
-#pragma omp parallel for schedule(static) reduction(max : maxV2)
+#pragma omp parallel reduction(max : maxV2)
+    {
+    if (checkFresh) {
+        CriticalStep mine;
+#pragma omp for schedule(static) nowait
+        for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine);
+#pragma omp critical(yadeCriticalStep)
+        if (mine.before(crit)) crit = mine;
+#pragma omp barrier
+    }
+    if (!(dt > crit.dt)) // (the same answer in every thread)
+#pragma omp for schedule(static)
     for (long id = 0; id < n; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
         if (!b) {
@@ -135,6 +146,8 @@ void NewtonIntegrator::action() {
             st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
+    }
+    if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     s.positionMirror.iter = s.iter;
     s.positionMirror.writes = writesBefore;
     s.positionMirror.changes = s.bodies.changes;
