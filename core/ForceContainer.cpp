@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <core/ForceContainer.hpp>
+#include <lib/base/ThreadRange.hpp>
 #include <cstring>
 
 namespace yade {
@@ -49,46 +50,44 @@ void ForceContainer::sync() {
         return;
     }
     const long n = (long)summedForce.size();
-    const int nBuffers = (int)force.size();
-    // each body's sum is done in thread-buffer order, so the result does not depend on the split;
-    // split by bodies as the integrator (static): each thread sums and zeroes the entries it reads next
 #pragma omp parallel if (n > 2000)
     {
-        long begin = 0, end = n;
-#ifdef _OPENMP
-        const long parts = omp_get_num_threads(), part = omp_get_thread_num(), q = n / parts, r = n % parts;
-        begin = part * q + std::min(part, r);
-        end = begin + q + (part < r ? 1 : 0);
-#endif
-        Vector3r* sf = summedForce.data();
-        Vector3r* st = summedTorque.data();
-        const Vector3r* pf = permForce.data();
-        const Vector3r* pt = permTorque.data();
-        const bool add = inSums, perm = anyPermanent && !inSums;
-        for (long i = begin; i < end; ++i) {
-            Vector3r f = force[0][i], t = torque[0][i];
-            for (int th = 1; th < nBuffers; ++th) {
-                f += force[th][i];
-                t += torque[th][i];
-            }
-            if (add) {
-                sf[i] += f;
-                st[i] += t;
-                continue;
-            }
-            if (perm) {
-                f += pf[i];
-                t += pt[i];
-            }
-            sf[i] = f;
-            st[i] = t;
-        }
-        for (int th = 0; th < nBuffers; ++th) { // (plain zero bytes: the same as Vector3r::Zero())
-            std::memset(static_cast<void*>(force[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
-            std::memset(static_cast<void*>(torque[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
-        }
+        const auto range = myThreadRange(n);
+        syncRange(range.first, range.second);
     }
     gathered();
+}
+
+// each body's sum is done in thread-buffer order, so the result does not depend on the split
+void ForceContainer::syncRange(long begin, long end) {
+    const int nBuffers = (int)force.size();
+    Vector3r* sf = summedForce.data();
+    Vector3r* st = summedTorque.data();
+    const Vector3r* pf = permForce.data();
+    const Vector3r* pt = permTorque.data();
+    const bool add = inSums, perm = anyPermanent && !inSums;
+    for (long i = begin; i < end; ++i) {
+        Vector3r f = force[0][i], t = torque[0][i];
+        for (int th = 1; th < nBuffers; ++th) {
+            f += force[th][i];
+            t += torque[th][i];
+        }
+        if (add) {
+            sf[i] += f;
+            st[i] += t;
+            continue;
+        }
+        if (perm) {
+            f += pf[i];
+            t += pt[i];
+        }
+        sf[i] = f;
+        st[i] = t;
+    }
+    for (int th = 0; th < nBuffers; ++th) { // (plain zero bytes: the same as Vector3r::Zero())
+        std::memset(static_cast<void*>(force[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
+        std::memset(static_cast<void*>(torque[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
+    }
 }
 
 void ForceContainer::reset() {

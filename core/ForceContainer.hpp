@@ -47,6 +47,12 @@ public:
     const Vector3r& getPermForce(int id) const { return permForce[id]; }
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     void sync();
+    // sync() in parts: a parallel loop over bodies calls syncRange() on its ranges (each body
+    // exactly once) before reading their sums, then gathered() once. Only where gathers().
+    bool isSynced() const { return synced; }
+    bool gathers() const { return !single(); }
+    void syncRange(long begin, long end);
+    void gathered() { inSums = clean = synced = true; }
     // The summed arrays (call sync() first), for loops over all bodies.
     // (With one thread and no permanent force the sums are the thread's buffer itself: no copy.)
     const Vector3r* forceData() const { return single() ? force[0].data() : summedForce.data(); }
@@ -62,7 +68,6 @@ private:
         if (clean) clean = false;
     }
     bool single() const { return force.size() == 1 && !anyPermanent; }
-    void gathered() { inSums = clean = synced = true; }
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();

@@ -1,4 +1,5 @@
 #include <core/Scene.hpp>
+#include <lib/base/ThreadRange.hpp>
 #include <lib/base/Logging.hpp>
 #include <pkg/common/InteractionLoop.hpp>
 #include <pkg/common/Facet.hpp>
@@ -153,20 +154,14 @@ static inline void setWasReal(InteractionContainer& intrs, long k, bool real) {
     if (intrs.wasReal[k] != (char)real) intrs.wasReal[k] = real;
 }
 
-// The thread that integrates body `id` under OpenMP's static schedule of n iterations (ranges of
-// n/threads, the first n%threads ones one longer). Only locality depends on it, never results.
-static int ownerOf(long id, long n, int threads) {
-    const long q = n / threads, r = n % threads, cut = r * (q + 1);
-    return (int)(id < cut ? id / (q + 1) : r + (q > 0 ? (id - cut) / q : 0));
-}
-
+// (threadOwning: the thread that integrates body `id`. Only locality depends on it, never results.)
 void InteractionLoop::assignPairsToThreads(int threads) {
     const InteractionContainer& intrs = scene->interactions;
     const long nBodies = (long)scene->bodies.size(), n = (long)intrs.size();
     threadPairs.assign(threads, {});
     for (long k = 0; k < n; ++k) {
         const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
-        const int ta = ownerOf(a, nBodies, threads), tb = ownerOf(b, nBodies, threads);
+        const int ta = threadOwning(a, nBodies, threads), tb = threadOwning(b, nBodies, threads);
         const size_t na = intrs.partnersOf(a).size(), nb = intrs.partnersOf(b).size();
         int t = (a + b) % 2 == 0 ? ta : tb;    // across two ranges: alternate
         if (ta == tb || nb > 4 * na + 16) t = ta; // b is a boundary (a facet touching many bodies): follow a

@@ -1,4 +1,5 @@
 #include <core/Scene.hpp>
+#include <lib/base/ThreadRange.hpp>
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pkg/dem/ScGeom.hpp>
@@ -40,7 +41,10 @@ static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     const Real dt = s.dt;
-    s.forces.sync();
+    const long n = (long)s.bodies.size();
+    // with several threads each sums the forces of its own bodies in the loop's parallel region
+    const bool gather = !s.forces.isSynced() && s.forces.gathers() && (long)s.forces.size() == n;
+    if (!gather) s.forces.sync();
     const bool energy = s.trackEnergy;
     int kinId = -1, gravId = -1, dampId = -1;
     if (energy) {
@@ -57,7 +61,6 @@ void NewtonIntegrator::action() {
     if (stabilityCheckPeriod > 0) lastCheckedDt = dt;
     if (full) crit = criticalTimeStep(s, true);
     // the members as constants, so that the compiler keeps them in registers across the stores below
-    const long n = (long)s.bodies.size();
     const Vector3r* forces = s.forces.forceData();
     const Vector3r* torques = s.forces.torqueData();
     const Vector3r g = gravity;
@@ -71,6 +74,9 @@ void NewtonIntegrator::action() {
     mirror.resize(n);
 #pragma omp parallel reduction(max : maxV2)
     {
+    const auto range = myThreadRange(n); // the bodies of this thread (the same split as O.forces and InteractionLoop)
+    const long begin = range.first, end = range.second;
+    if (gather) s.forces.syncRange(begin, end);
     if (checkFresh) {
         CriticalStep mine;
 #pragma omp for schedule(static) nowait
@@ -80,8 +86,7 @@ void NewtonIntegrator::action() {
 #pragma omp barrier
     }
     if (!(dt > crit.dt)) // (the same answer in every thread)
-#pragma omp for schedule(static)
-    for (long id = 0; id < n; ++id) {
+    for (long id = begin; id < end; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
         if (!b) {
             mirror[id] = Vector3r::Constant(NaN);
@@ -147,6 +152,7 @@ void NewtonIntegrator::action() {
         }
     }
     }
+    if (gather) s.forces.gathered();
     if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     s.positionMirror.iter = s.iter;
     s.positionMirror.writes = writesBefore;
