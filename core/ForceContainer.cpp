@@ -84,7 +84,11 @@ void ForceContainer::syncRange(long begin, long end) {
         sf[i] = f;
         st[i] = t;
     }
-    for (int th = 0; th < nBuffers; ++th) { // (plain zero bytes: the same as Vector3r::Zero())
+    zeroBuffers(begin, end);
+}
+
+void ForceContainer::zeroBuffers(long begin, long end) {
+    for (size_t th = 0; th < force.size(); ++th) { // (plain zero bytes: the same as Vector3r::Zero())
         std::memset(static_cast<void*>(force[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
         std::memset(static_cast<void*>(torque[th].data() + begin), 0, sizeof(Vector3r) * (end - begin));
     }
@@ -94,15 +98,14 @@ void ForceContainer::reset() {
     inSums = synced = false;
     if (clean) return; // the last sync zeroed the buffers and nothing was added since
     const long n = (long)summedForce.size();
-    const size_t nThreads = force.size();
+    const long nThreads = (long)force.size();
     // split by bodies as sync() and the integrator: each thread clears the entries it reads next
     // (cache lines stay with one core; clearing whole per-thread buffers moved them between cores)
-#pragma omp parallel for schedule(static) if (nThreads > 1 && n > 2000)
-    for (long i = 0; i < n; ++i)
-        for (size_t th = 0; th < nThreads; ++th) {
-            force[th][i] = Vector3r::Zero();
-            torque[th][i] = Vector3r::Zero();
-        }
+#pragma omp parallel if (nThreads > 1 && n > 2000)
+    {
+        const auto range = myThreadRange(n);
+        zeroBuffers(range.first, range.second);
+    }
     clean = true;
 }
 

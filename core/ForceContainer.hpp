@@ -68,6 +68,7 @@ private:
         if (clean) clean = false;
     }
     bool single() const { return force.size() == 1 && !anyPermanent; }
+    void zeroBuffers(long begin, long end); // every thread's entries of bodies begin .. end-1
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();
