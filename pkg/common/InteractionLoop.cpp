@@ -44,7 +44,7 @@ void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
 }
 
-bool InteractionLoop::prepareQuickReject(int threads) {
+bool InteractionLoop::prepareQuickReject() {
     Sphere sphereProbe;
     Facet facetProbe;
     const IGeomFunctor* ss = geomDispatcher->getFunctor(sphereProbe, sphereProbe).functor;
@@ -54,32 +54,34 @@ bool InteractionLoop::prepareQuickReject(int threads) {
     if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
     const long n = (long)bodies.size();
-    quickShapes.resize(n);
     ShapeCache& cache = shapeCache;
     quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.scene == scene->serial
             && cache.radius.size() == (size_t)n && scene->positionsCurrent();
-    if (quickFromMirror) { // shapes unchanged: contiguous copies only (each thread makes its own if several)
-        if (threads == 1) skinDisplacement2 = fillQuickShapes(quickShapes, skin.refPos.size() == (size_t)n ? skin.refPos.data() : nullptr);
+    if (quickFromMirror) { // shapes unchanged: the integrator's positions and the cached radii
+        shapePos = scene->positionMirror.pos.data();
     } else { // from the bodies; the radii (and facet markers) are kept for the next steps
         cache.writes = externalWrites();
         cache.changes = bodies.changes;
         cache.scene = scene->serial;
         cache.radius.assign(n, NaN);
         cache.facetIds.clear();
+        quickPos.resize(n);
         const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
 #pragma omp parallel for schedule(static)
         for (long id = 0; id < n; ++id) {
             const Body* b = bodies[(Body::id_t)id].get();
             if (b && b->shape && b->shape->getClassIndex() == sphereIndex) cache.radius[id] = static_cast<const Sphere&>(*b->shape).radius;
-            quickShapes[id] = QuickShape{b ? b->state->pos : Vector3r::Constant(NaN), cache.radius[id]};
+            quickPos[id] = b ? b->state->pos : Vector3r::Constant(NaN);
         }
         for (long id = 0; id < n; ++id) { // few facets: gathered serially, in id order
             const Body* b = bodies[(Body::id_t)id].get();
             if (!b || !b->shape || b->shape->getClassIndex() != facetIndex) continue;
-            quickShapes[id].radius = cache.radius[id] = -1 - (Real)cache.facetIds.size();
+            cache.radius[id] = -1 - (Real)cache.facetIds.size();
             cache.facetIds.push_back((Body::id_t)id);
         }
+        shapePos = quickPos.data();
     }
+    shapeRadius = cache.radius.data();
     facetPlanes.clear(); // facets may move or turn: their planes are computed every step
     for (Body::id_t id : cache.facetIds) {
         const Body& b = *bodies[id];
@@ -88,37 +90,22 @@ bool InteractionLoop::prepareQuickReject(int threads) {
     return true;
 }
 
-Real InteractionLoop::fillQuickShapes(std::vector<QuickShape>& shapes, const Vector3r* ref) const {
-    const Vector3r* pos = scene->positionMirror.pos.data();
-    const Real* radius = shapeCache.radius.data();
-    const size_t n = shapeCache.radius.size();
-    shapes.resize(n);
-    Real max2 = 0;
-    for (size_t id = 0; id < n; ++id) {
-        shapes[id] = QuickShape{pos[id], radius[id]};
-        if (ref) max2 = std::max(max2, (pos[id] - ref[id]).squaredNorm()); // (holes: NaN, ignored)
-    }
-    return max2;
-}
-
 void InteractionLoop::prepareSkin(bool quick) {
     skin.active = skin.fresh = false;
     if (!quick) {
         skin.pairsBuild = -1;
         return;
     }
-    const size_t n = quickShapes.size();
+    const size_t n = shapeCache.radius.size();
     const bool keep = quickFromMirror && skin.pairsBuild == threadPairsBuild && skin.refPos.size() == n
             && skin.facetPlanes == facetPlanes && skin.sphereSphereReach == sphereSphereReach && skin.facetSphereReach == facetSphereReach;
     skin.active = true;
     if (keep) return;
     // a new epoch: positions now are the reference; every pair is tested in this step
     skin.fresh = true;
-    const Vector3r* pos = quickFromMirror ? scene->positionMirror.pos.data() : nullptr; // (else quickShapes holds them)
-    skin.refPos.resize(n);
+    skin.refPos.assign(shapePos, shapePos + n);
     Real scale = 0;
     for (size_t id = 0; id < n; ++id) {
-        skin.refPos[id] = pos ? pos[id] : quickShapes[id].pos;
         const Real extent = skin.refPos[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
         if (extent > scale) scale = extent; // (NaN: ignored)
     }
@@ -135,14 +122,12 @@ void InteractionLoop::prepareSkin(bool quick) {
 // A sphere whose center is out of reach of a facet's plane. The functor computes the distance in
 // the facet's frame, this in global coordinates: a relative margin of 1e-12 for the rounding
 // leaves the borderline cases to the functor.
-bool InteractionLoop::facetSphereReject(const QuickShape& a, const QuickShape& b, Real& gap) const {
-    const bool aFacet = a.radius < 0;
-    const QuickShape& sphere = aFacet ? b : a;
-    const Real facetCode = aFacet ? a.radius : b.radius;
-    if (facetSphereReach <= 0 || !(sphere.radius > 0) || !(facetCode < 0)) return false;
+bool InteractionLoop::facetSphereReject(Body::id_t sphere, Real facetCode, Real& gap) const {
+    const Real radius = shapeRadius[sphere];
+    if (facetSphereReach <= 0 || !(radius > 0) || !(facetCode < 0)) return false;
     const FacetPlane& plane = facetPlanes[(size_t)(-1 - facetCode)];
-    const Vector3r d = sphere.pos - plane.point;
-    const Real reach = facetSphereReach * sphere.radius;
+    const Vector3r d = shapePos[sphere] - plane.point;
+    const Real reach = facetSphereReach * radius;
     const Real distance = std::abs(plane.normal.dot(d)), limit = reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach);
     gap = distance - limit;
     return distance > limit; // false for NaN
@@ -191,7 +176,7 @@ void InteractionLoop::action() {
 #ifdef _OPENMP
     threads = omp_get_max_threads();
 #endif
-    const bool quick = fastPath && prepareQuickReject(threads);
+    const bool quick = fastPath && prepareQuickReject();
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
     if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
@@ -199,8 +184,7 @@ void InteractionLoop::action() {
         assignPairsToThreads(threads);
     prepareSkin(quick);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos.data() : nullptr; // (D = 0 in a fresh epoch)
-    if (!skinRef) skinDisplacement2 = 0;
-    if (quick && threads > 1) threadQuickShapes.resize(threads);
+    Real displacement2 = 0; // D²
 #pragma omp parallel num_threads(threads)
     {
     int first = 0, step = 1;
@@ -208,12 +192,13 @@ void InteractionLoop::action() {
     first = omp_get_thread_num();
     step = omp_get_num_threads();
 #endif
-    const QuickShape* shapes = quickShapes.data();
-    Real displacement2 = skinDisplacement2; // D², the same in every thread (the same arithmetic on the same data)
-    if (quick && threads > 1) {
-        if (quickFromMirror) displacement2 = fillQuickShapes(threadQuickShapes[first], skinRef);
-        else threadQuickShapes[first] = quickShapes;
-        shapes = threadQuickShapes[first].data();
+    if (skinRef) { // D: each thread over the bodies it integrates, then the largest (exact: any order)
+        const auto range = myThreadRange((long)shapeCache.radius.size());
+        Real mine = 0;
+        for (long id = range.first; id < range.second; ++id) mine = std::max(mine, (shapePos[id] - skinRef[id]).squaredNorm()); // (holes: NaN, ignored)
+#pragma omp critical(yadeSkin)
+        displacement2 = std::max(displacement2, mine);
+#pragma omp barrier
     }
     const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
@@ -237,7 +222,7 @@ void InteractionLoop::action() {
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
         Real gap;
-        if (quick && !intrs.wasReal[k] && quickReject(shapes, intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
+        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
             if (gaps) gaps[i] = gap - twiceD;
             continue; // still apart
         }

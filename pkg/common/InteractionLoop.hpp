@@ -28,26 +28,20 @@ public:
 
 private:
     std::set<std::pair<int, int>> warnedShapePairs;
-    // Per step, contiguous, indexed by body id: sphere centers and radii, and facet planes, so that
-    // distant potential sphere-sphere and facet-sphere pairs are rejected without touching bodies
-    // or interactions (the Ig2 functors' quickRejectFactor promise).
-    struct QuickShape {
-        Vector3r pos; // sphere center
-        Real radius;  // sphere: > 0; facet: -1 - (index into facetPlanes); anything else: NaN
-    };
+    // Per step, contiguous, indexed by body id: sphere centers (shapePos) and radii (shapeRadius:
+    // sphere > 0; facet: -1 - (index into facetPlanes); anything else NaN), and facet planes, so
+    // that distant potential sphere-sphere and facet-sphere pairs are rejected without touching
+    // bodies or interactions (the Ig2 functors' quickRejectFactor promise). The centers are the
+    // integrator's positions (Scene::positionMirror) while they are current, else copied from the
+    // bodies into quickPos; the radii are shapeCache's.
     struct FacetPlane {
         Vector3r point, normal; // a point of the plane, unit normal (global)
         bool operator==(const FacetPlane& o) const { return point == o.point && normal == o.normal; }
     };
-    std::vector<QuickShape> quickShapes;
-    // With several threads, each reads its own copy (copied in sequence: the random reads of the
-    // pairs then stay in the core's cache instead of fetching lines the other core just wrote).
-    std::vector<std::vector<QuickShape>> threadQuickShapes;
-    bool quickFromMirror = false; // this step's array comes from the integrator's positions and cached radii
-    Real skinDisplacement2 = 0;   // with one thread: D² of the skin (below), found while filling quickShapes
-    // Copies the integrator's positions and the cached radii into shapes; returns the largest
-    // squared distance of a body from ref (0 without ref).
-    Real fillQuickShapes(std::vector<QuickShape>& shapes, const Vector3r* ref) const;
+    std::vector<Vector3r> quickPos;
+    const Vector3r* shapePos = nullptr;
+    const Real* shapeRadius = nullptr;
+    bool quickFromMirror = false; // this step's centers are the integrator's positions (the radii cached)
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
     struct ShapeCache {
@@ -57,22 +51,22 @@ private:
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
-    bool prepareQuickReject(int threads); // fills quickShapes (or lets each thread fill its copy); false if no functor makes the promise
+    bool prepareQuickReject(); // sets shapePos and shapeRadius; false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair; gap is
     // then how far the pair is beyond the functor's reach (distance of the centres, or of the
     // sphere's centre from the facet's plane, minus the reach).
-    bool quickReject(const QuickShape* shapes, Body::id_t id1, Body::id_t id2, Real& gap) const {
-        const QuickShape &a = shapes[id1], &b = shapes[id2];
-        if (a.radius > 0 && b.radius > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
-            const Real r = sphereSphereReach * (a.radius + b.radius);
-            const Real d2 = (a.pos - b.pos).squaredNorm();
+    bool quickReject(Body::id_t id1, Body::id_t id2, Real& gap) const {
+        const Real ra = shapeRadius[id1], rb = shapeRadius[id2];
+        if (ra > 0 && rb > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
+            const Real r = sphereSphereReach * (ra + rb);
+            const Real d2 = (shapePos[id1] - shapePos[id2]).squaredNorm();
             if (!(sphereSphereReach > 0 && d2 > r * r)) return false;
             gap = std::sqrt(d2) - r;
             return true;
         }
-        return (a.radius < 0 || b.radius < 0) && facetSphereReject(a, b, gap);
+        return (ra < 0 || rb < 0) && facetSphereReject(ra < 0 ? id2 : id1, ra < 0 ? ra : rb, gap);
     }
-    bool facetSphereReject(const QuickShape& a, const QuickShape& b, Real& gap) const;
+    bool facetSphereReject(Body::id_t sphere, Real facetCode, Real& gap) const;
     // The skin of the fast path (Verlet lists): a potential pair found a gap g beyond reach while
     // every body was within D of its position at the start of the epoch cannot come within reach
     // as long as every body stays within D' with 2D + 2D' < g (each body moved at most D + D'
