@@ -143,14 +143,38 @@ static inline void setWasReal(InteractionContainer& intrs, long k, bool real) {
 void InteractionLoop::assignPairsToThreads(int threads) {
     const InteractionContainer& intrs = scene->interactions;
     const long nBodies = (long)scene->bodies.size(), n = (long)intrs.size();
-    threadPairs.assign(threads, {});
+    threadPairs.resize(threads); // (the lists and scratch arrays keep their memory from call to call: fresh pages cost more than the work)
+    for (auto& list : threadPairs) list.clear();
+    // A contact (real at the last pass) costs the functors' work, a potential pair about one test.
+    constexpr long realWeight = 30;
+    // first the weight of the pairs with one possible thread, then, in container order (each list
+    // stays in it), the pairs across two ranges to the one of their two threads with less work.
+    // Without branches: which case a pair is in is unpredictable, and a mispredicted branch per
+    // pair cost more than the rest of the work.
+    std::vector<int>& owner = assignScratch.owner; // per body (contiguous: the loops below read them at random)
+    std::vector<int>& partners = assignScratch.partners;
+    std::vector<int>& fixed = assignScratch.fixed; // per pair: the thread, or -1: either of the two bodies' threads
+    owner.resize(nBodies);
+    partners.resize(nBodies);
+    fixed.resize(n);
+    for (long id = 0; id < nBodies; ++id) {
+        owner[id] = threadOwning(id, nBodies, threads);
+        partners[id] = (int)intrs.partnersOf((Body::id_t)id).size();
+    }
+    std::vector<long> loads(threads + 1, 0); // [0]: the pairs not fixed yet; [1 + t]: thread t
+    long* load = loads.data() + 1;
     for (long k = 0; k < n; ++k) {
         const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
-        const int ta = threadOwning(a, nBodies, threads), tb = threadOwning(b, nBodies, threads);
-        const size_t na = intrs.partnersOf(a).size(), nb = intrs.partnersOf(b).size();
-        int t = (a + b) % 2 == 0 ? ta : tb;    // across two ranges: alternate
-        if (ta == tb || nb > 4 * na + 16) t = ta; // b is a boundary (a facet touching many bodies): follow a
-        else if (na > 4 * nb + 16) t = tb;
+        const int ta = owner[a], tb = owner[b], na = partners[a], nb = partners[b];
+        const bool followA = ta == tb || nb > 4 * na + 16; // (b is a boundary, e.g. a facet touching many bodies: follow a)
+        const int t = followA ? ta : (na > 4 * nb + 16 ? tb : -1);
+        fixed[k] = t;
+        load[t] += intrs.wasReal[k] ? realWeight : 1;
+    }
+    for (long k = 0; k < n; ++k) {
+        const int ta = owner[intrs.pairIds[2 * k]], tb = owner[intrs.pairIds[2 * k + 1]], f = fixed[k];
+        const int t = f >= 0 ? f : (load[tb] < load[ta] ? tb : ta);
+        load[t] += (f < 0) * (intrs.wasReal[k] ? realWeight : 1);
         threadPairs[t].push_back(k);
     }
     threadPairsFor = intrs.changes;

@@ -89,14 +89,19 @@ private:
     void warnMissingIg2(const Shape& a, const Shape& b);
     // Interactions (positions in O.interactions) per thread: each goes to a thread that integrates
     // one of its bodies (NewtonIntegrator splits the body ids in equal consecutive ranges), so that
-    // the states it reads were written on the same core; pairs across two ranges alternate between
-    // their two threads, except pairs with a boundary (a body with many partners, e.g. a facet),
-    // which follow the other body (else the thread owning the boundaries would get most of them). In container order within each list: one thread gives the serial order.
+    // the states it reads were written on the same core; pairs across two ranges go to the one of
+    // their two threads with less work (contacts weigh more than potential pairs), except pairs with
+    // a boundary (a body with many partners, e.g. a facet), which follow the other body (else the
+    // thread owning the boundaries would get most of them). In container order within each list:
+    // one thread gives the serial order; the split depends only on the interactions, never on timing.
     std::vector<std::vector<long>> threadPairs;
     long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
     long long threadPairsBuild = 0;                         // incremented by every rebuild
     size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then
     void assignPairsToThreads(int threads);
+    struct {
+        std::vector<int> owner, partners, fixed;
+    } assignScratch;
 };
 
 } // namespace yade
