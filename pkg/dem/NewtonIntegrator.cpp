@@ -85,6 +85,8 @@ void NewtonIntegrator::action() {
         if (mine.before(crit)) crit = mine;
 #pragma omp barrier
     }
+    Real sumGrav = 0, sumKin = 0, sumDamp = 0; // this thread's energy terms
+    bool anyDynamic = false;
     if (!(dt > crit.dt)) // (the same answer in every thread)
     for (long id = begin; id < end; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
@@ -133,10 +135,11 @@ void NewtonIntegrator::action() {
         st.angVel = angVel;
         st.pos = pos;
         mirror[id] = pos;
-        if (energy && dynamic) {
-            s.energy.add(gravId, eGrav);
-            s.energy.add(kinId, eKin);
-            if (lambda != 0) s.energy.add(dampId, eDamp);
+        if (energy && dynamic) { // summed in registers, added to O.energy once per thread (below)
+            sumGrav += eGrav;
+            sumKin += eKin;
+            sumDamp += eDamp;
+            anyDynamic = true;
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
@@ -150,6 +153,11 @@ void NewtonIntegrator::action() {
             const Real n2 = q.coeffs().squaredNorm();
             st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
+    }
+    if (anyDynamic) { // (a term appears once something was added to it, as in Yade)
+        s.energy.add(gravId, sumGrav);
+        s.energy.add(kinId, sumKin);
+        if (lambda != 0) s.energy.add(dampId, sumDamp);
     }
     }
     if (gather) s.forces.gathered();
