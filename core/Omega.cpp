@@ -1,4 +1,5 @@
 #include <core/Omega.hpp>
+#include <lib/base/ThreadPinning.hpp>
 #include <cstdio>
 #include <stdexcept>
 
@@ -44,6 +45,7 @@ void Omega::requireStopped(const char* what) const {
 
 void Omega::loop() {
     Scene& s = scene();
+    pinLoopThreads(s.threads());
     endedByRequest = false;
     bool reachedEnd = false;
     try {

@@ -102,6 +102,37 @@ def test_threads_env(tmp_path):
     assert "omp=1" in r.stdout
 
 
+PINNING_SCENE = """\
+    import os, json
+    before = sorted(os.sched_getaffinity(0))
+    O.bodies.append([sphere((0, 0, 2.5 * i), 1) for i in range(3000)])
+    O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10))]
+    O.dt = 1e-4
+    O.run(20, True)
+    single = []  # threads of this process allowed on one CPU only
+    for tid in os.listdir("/proc/self/task"):
+        with open("/proc/self/task/%s/status" % tid) as f:
+            allowed = [l.split(":")[1].strip() for l in f if l.startswith("Cpus_allowed_list")][0]
+        single.append("," not in allowed and "-" not in allowed)
+    print(json.dumps({"before": before, "after": sorted(os.sched_getaffinity(0)), "pinned": sum(single)}))
+    """
+
+
+@pytest.mark.skipif(not hasattr(os, "sched_getaffinity") or len(os.sched_getaffinity(0)) < 2,
+                    reason="needs Linux and at least 2 CPUs")
+@pytest.mark.parametrize("env_extra,pinned", [({}, 2), ({"YADE_NO_PINNING": "1"}, 0), ({"OMP_PROC_BIND": "false"}, 0)])
+def test_two_threads_are_pinned_unless_asked_not_to(tmp_path, env_extra, pinned):
+    # with -j 2 the simulation's two OpenMP threads are pinned to two CPUs; Python's own thread
+    # (and so whatever it starts) keeps every CPU
+    import json
+    s = write(tmp_path, "pin.py", PINNING_SCENE)
+    r = run("-j", "2", "-n", "-x", s, env_extra=env_extra)
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout.strip().splitlines()[-1])
+    assert out["after"] == out["before"]
+    assert out["pinned"] == pinned
+
+
 def test_nogui_unsets_display(tmp_path):
     s = write(tmp_path, "disp.py", """\
         import os
