@@ -10,7 +10,8 @@ namespace yade {
 // per-thread loop times within 1-10 % instead of 15-40 %). Nothing is pinned when the user chose a
 // binding (OMP_PROC_BIND, OMP_PLACES or GOMP_CPU_AFFINITY set) or YADE_NO_PINNING is set; with one
 // thread the loop's thread gets back every CPU the process had. Other threads (Python's, those the
-// user starts) are never touched.
+// user starts from the script) are never touched; a process or thread started from a PyRunner
+// (which runs in the loop's thread) inherits the loop thread's single CPU.
 void pinLoopThreads(int threads);
 
 } // namespace yade
