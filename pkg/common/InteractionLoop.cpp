@@ -139,7 +139,7 @@ static inline void setWasReal(InteractionContainer& intrs, long k, bool real) {
     if (intrs.wasReal[k] != (char)real) intrs.wasReal[k] = real;
 }
 
-// (threadOwning: the thread that integrates body `id`. Only locality depends on it, never results.)
+// (threadOwning() gives the thread that integrates a body: only locality depends on the split, never results.)
 void InteractionLoop::assignPairsToThreads(int threads) {
     const InteractionContainer& intrs = scene->interactions;
     const long nBodies = (long)scene->bodies.size(), n = (long)intrs.size();
