@@ -37,9 +37,12 @@ public:
     // that the collider and the interaction loop need not follow Body -> State pointers. Usable
     // while positionsCurrent(). An engine other than the integrator that moves bodies must call
     // positionsChanged(); writes from Python are noticed through externalWrites().
+    // maxStep bounds how far any body moved in the step that wrote pos, from the positions of the
+    // mirror before it (the fastest body's |v|·dt; Inf when the step did not start from them).
     struct PositionMirror {
         std::vector<Vector3r> pos;
         long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
+        Real maxStep = Inf;
     } positionMirror;
     bool positionsCurrent() const {
         const PositionMirror& m = positionMirror;

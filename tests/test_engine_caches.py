@@ -7,7 +7,7 @@ import pytest
 
 from yade import *  # noqa: F401,F403
 from yade import O, Vector3
-from yade.utils import sphere
+from yade.utils import sphere, wall
 
 
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
@@ -96,3 +96,84 @@ def test_engines_reused_in_a_new_scene_start_afresh():
     O.dt = 1e-6
     O.step()
     assert touching()
+
+
+def test_a_move_between_the_collider_and_the_integrator_is_seen():
+    """A PyRunner placed after the collider moves body 1 onto body 0: the integrator's step then
+    starts from other positions than its last ones, and the collider must look at the bodies at
+    the next step (not trust the integrator's bound on how far they went)."""
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((0, 0, 0), .01), sphere((0.07, 0, 0), .01), sphere((1, 1, 1), .01)])
+    runner = PyRunner(command='import yade\nif yade.O.iter == 30: yade.O.bodies[1].state.pos = (0.019, 0, 0)', iterPeriod=1)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]), runner,
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    O.run(32, True)
+    assert touching()
+
+
+def countRunsExactly(x0, v, dt, sweep, steps):
+    """Collider runs of a body moving along x at constant speed: whenever it is farther than the
+    sweep from where the bounds were made (the arithmetic of the integrator, pos + vel·dt)."""
+    runs, ref, x = 1, x0, x0  # the first step builds the lists
+    for _ in range(steps - 1):
+        x = x + v * dt
+        if (x - ref) ** 2 > sweep ** 2:
+            runs, ref = runs + 1, x
+    return runs
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_collider_reruns_exactly_when_a_body_moved_beyond_the_sweep(threads):
+    """The collider skips its per-body check while the integrator's bound (the fastest body's
+    |v|·dt, summed) is below the sweep: it must still rerun at the very step a body has moved
+    farther than the sweep, never later."""
+    setNumThreads(threads)
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((0, 0, 0), .01), sphere((0.5, 0, 0), .01), sphere((1, 1, 1), .01)])
+    O.bodies[1].state.vel = (3.7, 0, 0)
+    O.bodies[2].state.vel = (0, -1.3, 0)  # slower: the bound follows the fastest body
+    collider = InsertionSortCollider([Bo1_Sphere_Aabb()], verletDist=1e-4)
+    O.engines = [ForceResetter(), collider,
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    for steps in (1, 27, 28, 29, 500, 1000):  # runs about every 27 steps
+        O.run(steps - O.iter, True) if steps > O.iter else None
+        assert collider.numAction == countRunsExactly(0.5, 3.7, 1e-6, 1e-4, steps), steps
+    assert collider.numAction > 30
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_potential_interactions_are_the_overlapping_bounds(threads):
+    """After many collider runs in a settling packing, O.interactions holds exactly the pairs of
+    bodies that may collide and whose bounds overlap, plus the real contacts (the collider looks
+    up only pairs whose bounds stopped overlapping and had overlapped at its previous run)."""
+    import numpy as np
+    from yade import pack
+    setNumThreads(threads)
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    sp = pack.SpherePack()
+    sp.makeCloud((0, 0, 0), (.16, .16, .25), rMean=.01, rRelFuzz=.2, num=300, seed=3)
+    sp.toSimulation()
+    O.bodies.append(wall((0, 0, 0), axis=2))
+    collider = InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()])
+    O.engines = [ForceResetter(), collider,
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.4)]
+    O.dt = .5 * PWaveTimeStep()
+    O.run(3000, True)
+    assert collider.numAction > 20 and O.interactions.countReal() > 50
+    lo = np.array([tuple(b.bound.min) for b in O.bodies])
+    hi = np.array([tuple(b.bound.max) for b in O.bodies])
+    overlap = np.all((lo[:, None, :] <= hi[None, :, :]) & (lo[None, :, :] <= hi[:, None, :]), axis=2)
+    dynamic = np.array([b.dynamic for b in O.bodies])
+    expected = {(a, b) for a, b in zip(*np.nonzero(np.triu(overlap, 1))) if dynamic[a] or dynamic[b]}
+    have = {(min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions.all()}
+    real = {(min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions}  # (iterating gives the real ones)
+    assert have - real <= expected  # no stale potential interaction
+    assert expected <= have          # none missing

@@ -5,18 +5,26 @@
 
 namespace yade {
 
-bool InsertionSortCollider::needsRun() const {
+bool InsertionSortCollider::needsRun() {
     const BodyContainer& bodies = scene->bodies;
     if (bodies.changes != lastBodyChanges) return true;
     const Real limit2 = sweep * sweep;
     const long n = (long)bodies.size();
     int moved = 0;
     if (scene->positionsCurrent() && boxes.size() == bodies.size()) { // contiguous: the integrator's positions, our boxes
-        const Vector3r* pos = scene->positionMirror.pos.data();
+        const Scene::PositionMirror& m = scene->positionMirror;
+        // no body moved farther than the sum of the fastest body's steps since the bounds were made
+        // (each step with the rounding of pos + vel·dt): below the sweep, nothing to check
+        if (m.iter == travelledTo + 1) travelled += m.maxStep * (1 + 1e-12) + 1e-15 * (scale + sweep);
+        else if (m.iter != travelledTo) travelled = Inf;
+        travelledTo = m.iter;
+        if (travelled < sweep * (1 - 1e-9)) return false;
+        const Vector3r* pos = m.pos.data();
 #pragma omp parallel for schedule(static) reduction(| : moved)
         for (long id = 0; id < n; ++id) moved |= boxes[id].collidable && (pos[id] - boxes[id].refPos).squaredNorm() > limit2; // (3.1.6)
         return moved != 0;
     }
+    travelled = Inf; // (positions not the integrator's: checked every step until the next run)
     // split as in NewtonIntegrator, so that each thread reads the states it has just written
 #pragma omp parallel for schedule(static) reduction(| : moved)
     for (long id = 0; id < n; ++id) {
@@ -30,18 +38,23 @@ bool InsertionSortCollider::needsRun() const {
 void InsertionSortCollider::updateBounds() {
     const BodyContainer& bodies = scene->bodies;
     const long n = (long)bodies.size();
-    Real minRadius = Inf;
-#pragma omp parallel for schedule(static) reduction(min : minRadius)
+    Real minRadius = Inf, extent = 0;
+#pragma omp parallel for schedule(static) reduction(min : minRadius) reduction(max : extent)
     for (long id = 0; id < n; ++id) {
         const Body* b = bodies[(Body::id_t)id].get();
+        if (b) extent = std::max(extent, b->state->pos.cwiseAbs().maxCoeff()); // (NaN: ignored)
         if (b && b->shape)
             if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
     }
+    scale = extent;
+    travelled = 0; // the bounds start from the positions now, those of the last step's integrator if current
+    travelledTo = scene->positionsCurrent() ? scene->positionMirror.iter : scene->iter - 1;
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     boundDispatcher->scene = scene;
     boundDispatcher->prepareTable(); // the loop below only reads the table
     for (const auto& f : boundDispatcher->functors)
         if (f) f->scene = scene;
+    boxes.swap(previousBoxes);
     boxes.assign(bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false, false});
     // each body on its own (the Bo1 functors write only the bound they are given)
 #pragma omp parallel for schedule(static)
@@ -75,6 +88,10 @@ bool InsertionSortCollider::overlapNow(Body::id_t a, Body::id_t b) const {
     return mayCollide && boxesOverlap(A, B);
 }
 
+bool InsertionSortCollider::overlappedBefore(Body::id_t a, Body::id_t b) const {
+    return previousBoxes.size() != boxes.size() || boxesOverlap(previousBoxes[a], previousBoxes[b]); // (not known: assume they did)
+}
+
 void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b) {
     const bool overlap = overlapNow(a, b);
     InteractionContainer& intrs = scene->interactions;
@@ -94,8 +111,11 @@ void InsertionSortCollider::insertionSort(std::vector<Bound1D>& list, std::vecto
         size_t j = i;
         while (j > 0 && current.coord < list[j - 1].coord) {
             const Bound1D& passed = list[j - 1];
-            // a lower bound moving below an upper one: the overlap along this axis begins; the converse: it ends
-            if (passed.isMin != current.isMin && passed.id != current.id && !(current.isMin && !overlapNow(current.id, passed.id)))
+            // a lower bound moving below an upper one: the overlap along this axis begins (an interaction
+            // is due if the bounds now overlap along every axis); the converse: it ends (the pair can
+            // have a potential interaction only if the bounds overlapped before this update)
+            if (passed.isMin != current.isMin && passed.id != current.id
+                    && (current.isMin ? overlapNow(current.id, passed.id) : overlappedBefore(current.id, passed.id)))
                 inversions.emplace_back(current.id, passed.id);
             list[j] = list[j - 1];
             --j;

@@ -48,17 +48,25 @@ private:
         bool collidable;
     };
     std::vector<Box> boxes;
+    // The boxes of the run before (potential interactions exist where those overlapped): the sort
+    // looks up only the pairs whose bounds stopped overlapping and had overlapped, not every crossing.
+    std::vector<Box> previousBoxes;
     long long lastBodyChanges = -1;
     long long lastScene = -1; // Scene::serial of the scene of the last run (not saved)
     Real sweep = 0;
     std::vector<Real> savedCoords;
     std::vector<int> savedIds;
     bool verifyLists = false; // lists came from a file: check them against the bodies first
-    bool needsRun() const;
+    // A bound on how far any body has moved since updateBounds() (Inf: unknown), from the
+    // integrator's steps up to the position mirror of step travelledTo; scale: the largest coordinate then.
+    Real travelled = Inf, scale = 0;
+    long long travelledTo = -2;
+    bool needsRun();
     void updateBounds();
     void rebuild();
     void insertionSort(std::vector<Bound1D>& list, std::vector<std::pair<Body::id_t, Body::id_t>>& inversions) const;
     bool overlapNow(Body::id_t a, Body::id_t b) const; // bounds overlap and the bodies may collide
+    bool overlappedBefore(Body::id_t a, Body::id_t b) const; // their previous boxes overlapped (true if unknown)
     // The overlap of the bounds of a and b may have changed: create or drop their potential interaction.
     void handleInversion(Body::id_t a, Body::id_t b);
     bool boundsOverlap(const Body& a, const Body& b) const;

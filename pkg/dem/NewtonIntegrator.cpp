@@ -70,6 +70,7 @@ void NewtonIntegrator::action() {
     Real maxV2 = 0;
     long diverged = -1; // a body whose new state is not finite (not written)
     const long long writesBefore = externalWrites();
+    const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
 #pragma omp parallel reduction(max : maxV2)
@@ -165,6 +166,7 @@ void NewtonIntegrator::action() {
     s.positionMirror.iter = s.iter;
     s.positionMirror.writes = writesBefore;
     s.positionMirror.changes = s.bodies.changes;
+    s.positionMirror.maxStep = continues ? std::sqrt(maxV2) * dt : Inf; // (pos + vel·dt: each body moved |vel|·dt)
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
 }
