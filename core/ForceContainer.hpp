@@ -1,8 +1,11 @@
-// O.forces: generalized forces accumulated during one step (1.2.1). Each OpenMP thread adds
-// into its own buffer; sync() sums the buffers in thread order, so a run is reproducible.
-// With several threads (or permanent forces) sync() moves the buffers' content into the sums and
-// zeroes them while their cache lines are at hand, so that reset() has nothing left to clear:
-// the sums then accumulate whatever later syncs of the same step gather.
+// O.forces: generalized forces accumulated during one step (1.2.1), one force and one torque per
+// body. With several OpenMP threads the bodies are split in the consecutive ranges of
+// ThreadRange.hpp (the split the integrator sums and integrates by): a thread adds in place to
+// the bodies of its own range, and appends what it adds to other bodies to its list of remote
+// contributions. sync() adds the lists to the totals in thread order, each in the order added,
+// so that a run is reproducible for a given thread count; only the few remote contributions
+// (contacts across two ranges) cross between cores, and a range's entries stay with the core
+// that adds to them, integrates them and zeroes them.
 #pragma once
 #include <lib/base/Math.hpp>
 #include <vector>
@@ -16,47 +19,47 @@ class ForceContainer {
 public:
     ForceContainer() { setThreads(1); }
     void setThreads(int n);
-    int threads() const { return (int)force.size(); }
+    int threads() const { return (int)remote.size(); }
     void resize(size_t nBodies);
-    size_t size() const { return summedForce.size(); }
+    size_t size() const { return force.size(); }
     void addForce(int id, const Vector3r& f) {
-        force[thread()][id] += f;
+        const int th = thread();
+        if (owns(th, id)) force[id] += f;
+        else remote[th].items.push_back({id, f, Vector3r::Zero()});
         markUnsynced();
     }
     void addTorque(int id, const Vector3r& t) {
-        torque[thread()][id] += t;
+        const int th = thread();
+        if (owns(th, id)) torque[id] += t;
+        else remote[th].items.push_back({id, Vector3r::Zero(), t});
         markUnsynced();
     }
-    // A contact's force on body 1 (its opposite on body 2) and the torques on both, with one
-    // lookup of the calling thread's buffers.
+    // A contact's force on body 1 (its opposite on body 2) and the torques on both.
     void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
         const int th = thread();
-        std::vector<Vector3r>& F = force[th];
-        std::vector<Vector3r>& T = torque[th];
-        F[id1] += f1;
-        F[id2] -= f1;
-        T[id1] += t1;
-        T[id2] += t2;
+        if (owns(th, id1)) {
+            force[id1] += f1;
+            torque[id1] += t1;
+        } else remote[th].items.push_back({id1, f1, t1});
+        if (owns(th, id2)) {
+            force[id2] -= f1;
+            torque[id2] += t2;
+        } else remote[th].items.push_back({id2, -f1, t2});
         markUnsynced();
     }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);
-    const Vector3r& getForce(int id) { sync(); return forceData()[id]; }
-    const Vector3r& getTorque(int id) { sync(); return torqueData()[id]; }
+    const Vector3r& getForce(int id) { sync(); return force[id]; }
+    const Vector3r& getTorque(int id) { sync(); return torque[id]; }
     const Vector3r& getPermForce(int id) const { return permForce[id]; }
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
+    // Adds the remote contributions (and, once per step, the permanent forces) to the totals.
     void sync();
-    // sync() in parts: a parallel loop over bodies calls syncRange() on its ranges (each body
-    // exactly once) before reading their sums, then gathered() once. Only where gathers().
     bool isSynced() const { return synced; }
-    bool gathers() const { return !single(); }
-    void syncRange(long begin, long end);
-    void gathered() { inSums = clean = synced = true; }
-    // The summed arrays (call sync() first), for loops over all bodies.
-    // (With one thread and no permanent force the sums are the thread's buffer itself: no copy.)
-    const Vector3r* forceData() const { return single() ? force[0].data() : summedForce.data(); }
-    const Vector3r* torqueData() const { return single() ? torque[0].data() : summedTorque.data(); }
+    // The totals (call sync() first), for loops over all bodies.
+    const Vector3r* forceData() const { return force.data(); }
+    const Vector3r* torqueData() const { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
 
@@ -67,8 +70,9 @@ private:
         if (synced) synced = false;
         if (clean) clean = false;
     }
-    bool single() const { return force.size() == 1 && !anyPermanent; }
-    void zeroBuffers(long begin, long end); // every thread's entries of bodies begin .. end-1
+    // whether body id is in thread th's range (with one thread: every body)
+    bool owns(int th, int id) const { return id >= rangeStart[th] && id < rangeStart[th + 1]; }
+    void setRanges();
     static int thread() {
 #ifdef _OPENMP
         return omp_get_thread_num();
@@ -76,11 +80,19 @@ private:
         return 0;
 #endif
     }
-    std::vector<std::vector<Vector3r>> force, torque; // [thread][body]
-    std::vector<Vector3r> summedForce, summedTorque, permForce, permTorque;
+    struct Remote {
+        int id;
+        Vector3r force, torque;
+    };
+    std::vector<Vector3r> force, torque, permForce, permTorque; // [body]
+    struct alignas(64) RemoteList { // (a cache line each: the threads append to their own lists at the same time)
+        std::vector<Remote> items;      // in the order added
+    };
+    std::vector<RemoteList> remote; // [thread]
+    std::vector<int> rangeStart; // thread t's range: rangeStart[t] .. rangeStart[t + 1] - 1
     bool synced = true, anyPermanent = false;
-    bool inSums = false; // the sums hold what this step's syncs gathered (buffers zeroed since)
-    bool clean = false;  // every buffer is zero
+    bool permInTotals = false; // this step's totals include the permanent forces
+    bool clean = true;         // every total is zero and no list holds anything
 };
 
 } // namespace yade

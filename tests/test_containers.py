@@ -7,7 +7,7 @@ import pytest
 from yade import *  # noqa: F401,F403
 from yade import O, Aabb, Body, FrictMat, ElastMat, ForceResetter, Sphere, Vector3
 from yade import utils
-from yade.utils import sphere
+from yade.utils import sphere, wall
 
 
 @pytest.fixture(autouse=True)
@@ -405,10 +405,17 @@ def test_force_resetter_zeroes_forces():
 
 @pytest.mark.parametrize("threads", [1, 2])
 def test_forces_added_after_a_read_are_added_to_what_was_read(threads):
-    # with several threads a read sums the per-thread buffers into the totals and zeroes them;
-    # what is added afterwards must still add up, permanent forces included
+    # with several threads a read adds the remote contributions (here: from Python to body 2999,
+    # in the second thread's range) to the totals; what is added afterwards must still add up,
+    # permanent forces included
     setNumThreads(threads)
-    O.bodies.append([sphere((0, 0, 0), 1) for i in range(3000)])  # enough bodies for a parallel sum
+    O.bodies.append([sphere((0, 0, 0), 1) for i in range(3000)])
+    O.forces.addF(2999, (0, 4, 0))
+    O.forces.addF(2999, (0, 0.25, 0))
+    assert vec(O.forces.f(2999)) == (0, 4.25, 0)
+    O.forces.addT(2999, (0, 1, 0))
+    O.forces.addF(2999, (1, 0, 0), permanent=True)
+    assert vec(O.forces.f(2999)) == (1, 4.25, 0) and vec(O.forces.t(2999)) == (0, 1, 0)
     O.forces.addF(7, (1, 2, 3))
     O.forces.addT(7, (0, 0, 1))
     assert vec(O.forces.f(7)) == (1, 2, 3)
@@ -429,12 +436,67 @@ def test_forces_added_after_a_read_are_added_to_what_was_read(threads):
     O.forces.addF(7, (1, 0, 0))
     O.step()
     assert vec(O.forces.f(7)) == (0, 0, 10)
+    assert vec(O.forces.f(2999)) == (1, 0, 0) and vec(O.forces.t(2999)) == (0, 0, 0)
+
+
+def settlingPile():
+    """300 spheres falling on a wall: contact forces only in O.forces (gravity is the integrator's)."""
+    from yade import pack
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    sp = pack.SpherePack()
+    sp.makeCloud((0, 0, 0), (.16, .16, .25), rMean=.01, rRelFuzz=.2, num=300, seed=3)
+    sp.toSimulation()
+    O.bodies.append(wall((0, 0, 0), axis=2))
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.4)]
+    O.dt = .5 * PWaveTimeStep()
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_each_contact_force_is_added_once_to_both_bodies(threads):
+    # with two threads about half the contacts join bodies of both threads' ranges: one of the two
+    # forces is a remote contribution. Each body's force must be the sum of its contacts' forces,
+    # and they must cancel over the whole pile and the wall (action and reaction).
+    setNumThreads(threads)
+    settlingPile()
+    O.run(1500, True)
+    checked = 0
+    for step in range(40):
+        O.run(25, True)
+        expected = [Vector3(0, 0, 0) for b in O.bodies]
+        for i in O.interactions:
+            f = i.phys.normalForce + i.phys.shearForce
+            expected[i.id1] -= f  # (Law2: the force on body 2, its opposite on body 1)
+            expected[i.id2] += f
+        scale = max(sum(abs(x) for x in vec(e)) for e in expected)
+        if scale == 0:
+            continue
+        for b in O.bodies:
+            assert vec(O.forces.f(b.id)) == pytest.approx(vec(expected[b.id]), abs=1e-12 * scale)
+        total = sum((O.forces.f(b.id) for b in O.bodies), Vector3(0, 0, 0))
+        assert max(abs(x) for x in vec(total)) < 1e-12 * scale * len(O.bodies)
+        checked += 1
+    assert checked > 20 and O.interactions.countReal() > 30
+
+
+def test_two_threads_repeat_a_run_to_the_last_bit():
+    setNumThreads(2)
+    runs = []
+    for attempt in range(2):
+        O.reset()
+        settlingPile()
+        O.run(2000, True)
+        assert O.interactions.countReal() > 30
+        runs.append([tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel) for b in O.bodies])
+    assert runs[0] == runs[1]
 
 
 @pytest.mark.parametrize("threads", [1, 2])
 def test_forces_of_a_step_are_readable_after_it(threads):
     # two touching spheres pressed together, with gravity: after each step O.forces holds the
-    # contact force of that step (read after the integrator has summed and cleared the buffers)
+    # contact force of that step (read after the integrator has used it)
     setNumThreads(threads)
     O.bodies.append([sphere((0, 0, 0), 1, fixed=True), sphere((0, 0, 1.9), 1)])
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),

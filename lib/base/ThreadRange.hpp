@@ -1,6 +1,7 @@
 // The split of body ids between threads: n ids in consecutive ranges, the first n % parts of them
-// one longer (as OpenMP's static schedule in GCC's libgomp). The force sums, the integrator and the
-// interaction loop's assignment of pairs use it, so that each thread reads the entries it wrote.
+// one longer (as OpenMP's static schedule in GCC's libgomp). O.forces (each thread adds in place
+// to its own range), the integrator and the interaction loop's assignment of pairs use it, so
+// that each thread mostly reads and writes the entries it wrote itself.
 #pragma once
 #include <algorithm>
 #include <utility>

@@ -42,9 +42,7 @@ void NewtonIntegrator::action() {
     Scene& s = *scene;
     const Real dt = s.dt;
     const long n = (long)s.bodies.size();
-    // with several threads each sums the forces of its own bodies in the loop's parallel region
-    const bool gather = !s.forces.isSynced() && s.forces.gathers() && (long)s.forces.size() == n;
-    if (!gather) s.forces.sync();
+    s.forces.sync(); // (the remote contributions of the threads: few)
     const bool energy = s.trackEnergy;
     int kinId = -1, gravId = -1, dampId = -1;
     if (energy) {
@@ -77,7 +75,6 @@ void NewtonIntegrator::action() {
     {
     const auto range = myThreadRange(n); // the bodies of this thread (the same split as O.forces and InteractionLoop)
     const long begin = range.first, end = range.second;
-    if (gather) s.forces.syncRange(begin, end);
     if (checkFresh) {
         CriticalStep mine;
 #pragma omp for schedule(static) nowait
@@ -161,7 +158,6 @@ void NewtonIntegrator::action() {
         if (lambda != 0) s.energy.add(dampId, sumDamp);
     }
     }
-    if (gather) s.forces.gathered();
     if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     s.positionMirror.iter = s.iter;
     s.positionMirror.writes = writesBefore;
