@@ -162,6 +162,32 @@ def test_run_bench_smoke_prints_the_table(tmp_path):
     assert data["summary"]["rows"][0]["iter_per_s"] == pytest.approx(float(ips), rel=1e-3)
 
 
+def test_run_bench_reports_the_machine_ceiling_next_to_the_scaling(tmp_path):
+    """With two thread counts, each repeat also times a perfectly parallel loop (build/parallel_ceiling):
+    the ceiling of the scaling on this machine at that moment."""
+    js = tmp_path / "bench.json"
+    r = run_harness("--no-reference", "--sizes", "200", "--steps", "20", "--settle", "20", "--repeats", "2",
+                    "--threads", "1,2", "--json", str(js))
+    assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
+    m = re.search(r"^machine ceiling \(.*\): 2/1 threads ([0-9.]+)  runs \[([0-9. ]+)\]$", r.stdout, re.M)
+    assert m, r.stdout[-2000:]
+    runs = [float(x) for x in m.group(2).split()]
+    assert len(runs) == 2 and all(0.2 < x < 4 for x in runs)
+    ceiling = json.loads(js.read_text())["summary"]["ceiling"]
+    assert [c["threads"] for c in ceiling] == [2] and ceiling[0]["runs"] == pytest.approx(runs, abs=0.006)
+
+
+def test_parallel_ceiling_program():
+    binary = REPO / "build" / "parallel_ceiling"
+    if not binary.exists():
+        pytest.skip("build/parallel_ceiling not built")
+    out = subprocess.run([str(binary), "1", "50", "2"], capture_output=True, text=True, timeout=60).stdout
+    m = re.match(r"ceiling threads=1 one_thread_steps_per_s=([0-9.]+) threads_steps_per_s=([0-9.]+) ratio=([0-9.]+)$", out.strip())
+    assert m and float(m.group(1)) > 0 and float(m.group(2)) > 0
+    assert float(m.group(3)) == pytest.approx(float(m.group(2)) / float(m.group(1)), rel=1e-2)  # (1 thread both: about 1)
+    assert subprocess.run([str(binary), "0"], capture_output=True, timeout=60).returncode == 2
+
+
 def test_run_bench_features_and_memory(tmp_path):
     if not os.access("/usr/bin/time", os.X_OK):
         pytest.skip("/usr/bin/time is not installed (Debian package 'time')")

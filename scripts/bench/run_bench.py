@@ -13,7 +13,10 @@ which is parsed. Runs are interleaved: each repeat runs every (size, threads, va
 combination once, here then reference, so that slow drifts of the machine hit both alike.
 Printed: a table of medians (iter/s, particle-steps/s, contacts, peak RSS and RSS per sphere with
 --memory), the ratios here/reference and 2 threads / 1 thread, and with --features the cost of
-each optional feature measured against the plain run of the same repeat.
+each optional feature measured against the plain run of the same repeat. With several thread
+counts each repeat also runs build/parallel_ceiling (scripts/bench/parallel_ceiling.cpp): what the
+machine's threads give at that moment to a perfectly parallel loop of the same size, the ceiling
+of any scaling measured next to it.
 
 Timing is noisy (±25% between identical runs on shared machines): compare ratios measured in one
 invocation, never absolute figures across invocations. Exit status: 0 when every run produced its
@@ -92,6 +95,29 @@ def build_stamp():
             return hashlib.sha1(f.read()).hexdigest()[:12]
     except (OSError, IndexError):
         return None
+
+
+def ceiling_binary():
+    """The build's parallel_ceiling program, or None."""
+    bdir = os.path.abspath(os.environ.get("YADE_BUILD_DIR") or os.path.join(REPO, "build"))
+    path = os.path.join(bdir, "parallel_ceiling")
+    return path if os.access(path, os.X_OK) else None
+
+
+CEILING_RE = re.compile(r"ceiling threads=(\d+) one_thread_steps_per_s=([0-9.]+) threads_steps_per_s=([0-9.]+) ratio=([0-9.]+)")
+
+
+def run_ceiling(binary, threads):
+    """T threads / 1 thread for a perfectly parallel loop (threads bound to CPUs, as the engine's), or None."""
+    env = dict(os.environ)
+    if not any(k in env for k in ("OMP_PROC_BIND", "OMP_PLACES", "GOMP_CPU_AFFINITY", "YADE_NO_PINNING")):
+        env["OMP_PROC_BIND"] = "true"
+    try:
+        out = subprocess.run([binary, str(threads)], capture_output=True, text=True, timeout=120, env=env).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    m = CEILING_RE.search(out)
+    return float(m.group(4)) if m else None
 
 
 def reference_binary():
@@ -206,12 +232,20 @@ def plan(args, engines):
     return rounds
 
 
-def run_all(args, engines, ref_bin, log=print):
+def run_all(args, engines, ref_bin, log=print, ceilings=None):
+    """ceilings: a dict filled with {threads: [parallel_ceiling ratio per repeat]} (several thread counts only)."""
     rounds = plan(args, engines)
     total = sum(len(r) for r in rounds)
     results = {}          # key -> list over repeats of run_one()'s dicts (failed ones have ok False)
+    ceiling_bin = ceiling_binary() if ceilings is not None and len(args.threads) > 1 else None
     k = 0
     for rep, keys in enumerate(rounds):
+        for t in args.threads if ceiling_bin else []:
+            if t > 1:
+                c = run_ceiling(ceiling_bin, t)
+                if c is not None:
+                    ceilings.setdefault(t, []).append(c)
+                    log("  (machine ceiling, a perfectly parallel loop: %d/1 threads %.2f)" % (t, c))
         for key in keys:
             k += 1
             e, t, n, v = key
@@ -238,7 +272,7 @@ def run_all(args, engines, ref_bin, log=print):
     return results
 
 
-def summarize(args, engines, results):
+def summarize(args, engines, results, ceilings=None):
     """Medians and ratios; returns a JSON-serialisable dict."""
     rows = []
     for n in args.sizes:
@@ -333,7 +367,8 @@ def summarize(args, engines, results):
     loads = [r["load1"] for rs in results.values() for r in rs if r.get("load1") is not None]
     return {"load1_min": min(loads) if loads else None, "load1_max": max(loads) if loads else None,
             "builds": builds, "rows": rows, "ratios": ratios, "scaling": scaling, "marginal_memory": marginal,
-            "features": features}
+            "features": features,
+            "ceiling": [{"threads": t, "ratio": median(v), "runs": v} for t, v in sorted((ceilings or {}).items())]}
 
 
 def print_report(args, engines, summary, out=print):
@@ -386,6 +421,9 @@ def print_report(args, engines, summary, out=print):
             out("%-4s N=%d: %d/%d threads %s  paired [%s]" % (
                 s["engine"], s["size"], s["threads"], s["base_threads"], fmt(s["speedup"], ".2f"),
                 " ".join("%.2f" % x for x in s["paired"])))
+        for c in summary.get("ceiling", []):
+            out("machine ceiling (a perfectly parallel loop, once per repeat): %d/1 threads %s  runs [%s]" % (
+                c["threads"], fmt(c["ratio"], ".2f"), " ".join("%.2f" % x for x in c["runs"])))
     if summary["marginal_memory"]:
         out("")
         out("== memory per added sphere ((RSS(N) - RSS(N0)) / (N - N0)) ==")
@@ -473,8 +511,9 @@ def main(argv=None):
     sys.stdout.flush()
 
     t0 = time.time()
-    results = run_all(args, engines, ref_bin, log=log)
-    summary = summarize(args, engines, results)
+    ceilings = {}
+    results = run_all(args, engines, ref_bin, log=log, ceilings=ceilings)
+    summary = summarize(args, engines, results, ceilings)
     print_report(args, engines, summary)
     nfail = sum(1 for rs in results.values() for r in rs if not r["ok"])
     print("%d runs in %.0f s%s" % (sum(len(rs) for rs in results.values()), time.time() - t0,
