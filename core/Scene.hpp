@@ -39,10 +39,16 @@ public:
     // positionsChanged(); writes from Python are noticed through externalWrites().
     // maxStep bounds how far any body moved in the step that wrote pos, from the positions of the
     // mirror before it (the fastest body's |v|·dt; Inf when the step did not start from them).
+    // With `reference` (positions of an earlier step, tagged by the engine that set them: the
+    // interaction loop's skin) the integrator also finds, with pos, the largest squared distance
+    // of a body from them (maxMoved2, for the tag maxMovedTag): no separate pass and no wait.
     struct PositionMirror {
         std::vector<Vector3r> pos;
         long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
         Real maxStep = Inf;
+        std::vector<Vector3r> reference;
+        long long referenceTag = -1, maxMovedTag = -1;
+        Real maxMoved2 = NaN;
     } positionMirror;
     bool positionsCurrent() const {
         const PositionMirror& m = positionMirror;

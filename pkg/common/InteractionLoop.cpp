@@ -4,6 +4,7 @@
 #include <pkg/common/InteractionLoop.hpp>
 #include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
+#include <atomic>
 #include <stdexcept>
 #ifdef _OPENMP
 #include <omp.h>
@@ -104,6 +105,11 @@ void InteractionLoop::prepareSkin(bool quick) {
     // a new epoch: positions now are the reference; every pair is tested in this step
     skin.fresh = true;
     skin.refPos.assign(shapePos, shapePos + n);
+    // the integrator measures D from a copy of them (a tag unique to this epoch of this loop)
+    static std::atomic<long long> epochs{0};
+    skin.tag = ++epochs;
+    scene->positionMirror.reference = skin.refPos;
+    scene->positionMirror.referenceTag = skin.tag;
     Real scale = 0;
     for (size_t id = 0; id < n; ++id) {
         const Real extent = skin.refPos[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
@@ -209,6 +215,11 @@ void InteractionLoop::action() {
     prepareSkin(quick);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos.data() : nullptr; // (D = 0 in a fresh epoch)
     Real displacement2 = 0; // D²
+    const Scene::PositionMirror& mirror = s.positionMirror;
+    if (skinRef && quickFromMirror && mirror.maxMovedTag == skin.tag && mirror.referenceTag == skin.tag) { // found by the integrator with these positions
+        displacement2 = mirror.maxMoved2;
+        skinRef = nullptr;
+    }
 #pragma omp parallel num_threads(threads)
     {
     int first = 0, step = 1;

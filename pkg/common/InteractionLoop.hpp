@@ -82,6 +82,7 @@ private:
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
         Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
         long long pairsBuild = -1;           // threadPairsBuild when the epoch began
+        long long tag = -1;                  // this epoch's Scene::PositionMirror::referenceTag
         bool active = false;                 // used in this step
         bool fresh = false;                  // the epoch begins in this step (D = 0, every pair tested)
     } skin;

@@ -71,7 +71,9 @@ void NewtonIntegrator::action() {
     const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
-#pragma omp parallel reduction(max : maxV2)
+    const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
+    Real maxMoved2 = 0;
+#pragma omp parallel reduction(max : maxV2, maxMoved2)
     {
     const auto range = myThreadRange(n); // the bodies of this thread (the same split as O.forces and InteractionLoop)
     const long begin = range.first, end = range.second;
@@ -152,6 +154,8 @@ void NewtonIntegrator::action() {
             st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
+    if (reference) // (this thread's bodies, just written: in cache; holes: NaN, ignored)
+        for (long id = begin; id < end; ++id) maxMoved2 = std::max(maxMoved2, (mirror[id] - reference[id]).squaredNorm());
     if (anyDynamic) { // (a term appears once something was added to it, as in Yade)
         s.energy.add(gravId, sumGrav);
         s.energy.add(kinId, sumKin);
@@ -163,6 +167,8 @@ void NewtonIntegrator::action() {
     s.positionMirror.writes = writesBefore;
     s.positionMirror.changes = s.bodies.changes;
     s.positionMirror.maxStep = continues ? std::sqrt(maxV2) * dt : Inf; // (pos + vel·dt: each body moved |vel|·dt)
+    s.positionMirror.maxMoved2 = maxMoved2;
+    s.positionMirror.maxMovedTag = reference ? s.positionMirror.referenceTag : -1;
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
 }
