@@ -64,6 +64,21 @@ void ForceContainer::sync() {
     synced = true;
 }
 
+void ForceContainer::applyCaptured(const std::vector<Captured>& list) {
+    const int th = thread();
+    RemoteList& mine = remote[th];
+    for (const Captured& c : list) {
+        if (!owns(th, c.id)) mine.items.push_back({c.id, c.f, c.t}); // (zero where the kind has none, as addForce's)
+        else if (c.kind == Captured::force) force[c.id] += c.f;
+        else if (c.kind == Captured::torque) torque[c.id] += c.t;
+        else {
+            force[c.id] += c.f;
+            torque[c.id] += c.t;
+        }
+    }
+    if (!list.empty()) markUnsynced();
+}
+
 void ForceContainer::reset() {
     permInTotals = synced = false;
     if (clean) return; // nothing was added since the last reset

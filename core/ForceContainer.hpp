@@ -24,19 +24,26 @@ public:
     size_t size() const { return force.size(); }
     void addForce(int id, const Vector3r& f) {
         const int th = thread();
-        if (owns(th, id)) force[id] += f;
+        if (remote[th].capture) remote[th].capture->push_back({id, Captured::force, f, Vector3r::Zero()});
+        else if (owns(th, id)) force[id] += f;
         else remote[th].items.push_back({id, f, Vector3r::Zero()});
         markUnsynced();
     }
     void addTorque(int id, const Vector3r& t) {
         const int th = thread();
-        if (owns(th, id)) torque[id] += t;
+        if (remote[th].capture) remote[th].capture->push_back({id, Captured::torque, Vector3r::Zero(), t});
+        else if (owns(th, id)) torque[id] += t;
         else remote[th].items.push_back({id, Vector3r::Zero(), t});
         markUnsynced();
     }
     // A contact's force on body 1 (its opposite on body 2) and the torques on both.
     void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
         const int th = thread();
+        if (remote[th].capture) {
+            remote[th].capture->push_back({id1, Captured::both, f1, t1});
+            remote[th].capture->push_back({id2, Captured::both, -f1, t2});
+            return markUnsynced();
+        }
         if (owns(th, id1)) {
             force[id1] += f1;
             torque[id1] += t1;
@@ -62,6 +69,17 @@ public:
     const Vector3r* torqueData() const { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
+    // Work stealing (ChunkQueue.hpp): what the calling thread adds goes, in order, to `into`
+    // until capture(nullptr); applyCaptured() then adds such a list as if the calling thread
+    // added it now (so a chunk computed by another thread gives the same sums).
+    struct Captured {
+        enum Kind : char { both, force, torque } kind;
+        int id;
+        Vector3r f, t;
+        Captured(int id_, Kind k, const Vector3r& f_, const Vector3r& t_) : kind(k), id(id_), f(f_), t(t_) {}
+    };
+    void capture(std::vector<Captured>* into) { remote[thread()].capture = into; }
+    void applyCaptured(const std::vector<Captured>& list);
 
 private:
     // Written only when set: threads adding forces in parallel then only read the flag, and its
@@ -87,6 +105,7 @@ private:
     std::vector<Vector3r> force, torque, permForce, permTorque; // [body]
     struct alignas(64) RemoteList { // (a cache line each: the threads append to their own lists at the same time)
         std::vector<Remote> items;      // in the order added
+        std::vector<Captured>* capture = nullptr;
     };
     std::vector<RemoteList> remote; // [thread]
     std::vector<int> rangeStart; // thread t's range: rangeStart[t] .. rangeStart[t + 1] - 1

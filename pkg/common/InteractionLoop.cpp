@@ -6,6 +6,7 @@
 #include <pkg/common/Sphere.hpp>
 #include <atomic>
 #include <stdexcept>
+#include <thread>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -220,6 +221,19 @@ void InteractionLoop::action() {
         displacement2 = mirror.maxMoved2;
         skinRef = nullptr;
     }
+    // Each thread's list is cut into chunks of the entries it tests. A thread does the chunks of
+    // its own list from the front, then helps with what is left of the others' from their back;
+    // the forces of a chunk done for another list are kept (O.forces' capture) and added by the
+    // list's thread after its own chunks, in chunk order: every force is added in the order the
+    // list's thread alone would have added it, whoever computed it and however fast each thread
+    // ran (on shared machines one core is often slower than the other for seconds). Not with
+    // energy tracking: the functors' energy terms are summed per computing thread.
+    const bool steal = threads > 1 && !s.trackEnergy;
+    if (work.size() != (size_t)threads) {
+        work.clear();
+        for (int t = 0; t < threads; ++t) work.emplace_back(new ListWork);
+    }
+    for (auto& w : work) w->queue.unpublish();
 #pragma omp parallel num_threads(threads)
     {
     int first = 0, step = 1;
@@ -236,24 +250,12 @@ void InteractionLoop::action() {
 #pragma omp barrier
     }
     const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
-    for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
+    // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin)
+    auto process = [&](int list, size_t j0, size_t j1) {
     const std::vector<long>& pairs = threadPairs[list];
     Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
-    // the entries to test: all, or with the skin those not certainly beyond reach since their
-    // last test (gathered without branches: which ones are skipped is unpredictable)
-    size_t count = pairs.size();
-    const unsigned* todo = nullptr;
-    if (gaps) {
-        std::vector<unsigned>& entries = skin.todo[list];
-        entries.resize(pairs.size());
-        count = 0;
-        for (size_t i = 0; i < pairs.size(); ++i) {
-            entries[count] = (unsigned)i;
-            count += !(gaps[i] > skipAbove);
-        }
-        todo = entries.data();
-    }
-    for (size_t j = 0; j < count; ++j) {
+    const unsigned* todo = work[list]->todo;
+    for (size_t j = j0; j < j1; ++j) {
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
         Real gap;
@@ -310,6 +312,54 @@ void InteractionLoop::action() {
         if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
         setWasReal(intrs, k, I.isReal());
     }
+    };
+    for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
+        // the entries to test: all, or with the skin those not certainly beyond reach since their
+        // last test (gathered without branches: which ones are skipped is unpredictable)
+        const std::vector<long>& pairs = threadPairs[list];
+        const Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
+        ListWork& w = *work[list];
+        w.count = pairs.size();
+        w.todo = nullptr;
+        if (gaps) {
+            std::vector<unsigned>& entries = skin.todo[list];
+            entries.resize(pairs.size());
+            size_t count = 0;
+            for (size_t i = 0; i < pairs.size(); ++i) {
+                entries[count] = (unsigned)i;
+                count += !(gaps[i] > skipAbove);
+            }
+            w.count = count;
+            w.todo = entries.data();
+        }
+        const unsigned chunks = steal ? (unsigned)((w.count + chunkEntries - 1) / chunkEntries) : 0;
+        if (w.captured.size() < chunks) w.captured.resize(chunks);
+        w.queue.reset(chunks);
+        if (!steal) process(list, 0, w.count);
+    }
+    if (steal) {
+        unsigned c;
+        for (int list = first; list < threads; list += step) // own chunks, from the front
+            while (work[list]->queue.takeFront(c)) process(list, (size_t)c * chunkEntries, std::min(work[list]->count, ((size_t)c + 1) * chunkEntries));
+        for (int other = 0; other < threads; ++other) { // then the others' last chunks
+            if ((other - first) % step == 0 && other >= first) continue;
+            ListWork& w = *work[other];
+            while (!w.queue.published()) std::this_thread::yield(); // (its thread is gathering the entries)
+            while (w.queue.takeBack(c)) {
+                w.captured[c].clear();
+                s.forces.capture(&w.captured[c]);
+                process(other, (size_t)c * chunkEntries, std::min(w.count, ((size_t)c + 1) * chunkEntries));
+                s.forces.capture(nullptr);
+                w.queue.markDone(c);
+            }
+        }
+        for (int list = first; list < threads; list += step) { // the forces of own chunks done by others, in order
+            ListWork& w = *work[list];
+            for (c = w.queue.stolenFrom(); c < w.queue.count(); ++c) {
+                w.queue.waitDone(c);
+                s.forces.applyCaptured(w.captured[c]);
+            }
+        }
     }
     }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);

@@ -3,7 +3,9 @@
 #pragma once
 #include <core/IGeomDispatcher.hpp>
 #include <core/IPhysDispatcher.hpp>
+#include <core/ForceContainer.hpp>
 #include <core/LawDispatcher.hpp>
+#include <lib/base/ChunkQueue.hpp>
 #include <set>
 #include <vector>
 
@@ -100,6 +102,15 @@ private:
     long long threadPairsBuild = 0;                         // incremented by every rebuild
     size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then
     void assignPairsToThreads(int threads);
+    // Work stealing within a step (action()): per thread list, its entries to test and their chunks.
+    static constexpr size_t chunkEntries = 256;
+    struct ListWork {
+        ChunkQueue queue;
+        size_t count = 0;                 // entries to test
+        const unsigned* todo = nullptr;   // their positions in the list (nullptr: all, in order)
+        std::vector<std::vector<ForceContainer::Captured>> captured; // per chunk done by another thread
+    };
+    std::vector<std::unique_ptr<ListWork>> work;
     struct {
         std::vector<int> owner, partners, fixed;
     } assignScratch;

@@ -4,6 +4,7 @@
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pkg/dem/ScGeom.hpp>
 #include <sstream>
+#include <thread>
 
 namespace yade {
 
@@ -73,7 +74,19 @@ void NewtonIntegrator::action() {
     mirror.resize(n);
     const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
     Real maxMoved2 = 0;
-#pragma omp parallel reduction(max : maxV2, maxMoved2)
+    // With several threads a thread that is done helps with the others' last bodies (on shared
+    // machines a core is often slower than the other for a while); not with energy tracking,
+    // whose sums are per thread.
+    int threads = 1;
+#ifdef _OPENMP
+    threads = omp_get_max_threads();
+#endif
+    const bool steal = threads > 1 && !energy;
+    if (steal) {
+        while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
+        for (auto& q : queues) q->unpublish();
+    }
+#pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2)
     {
     const auto range = myThreadRange(n); // the bodies of this thread (the same split as O.forces and InteractionLoop)
     const long begin = range.first, end = range.second;
@@ -87,8 +100,9 @@ void NewtonIntegrator::action() {
     }
     Real sumGrav = 0, sumKin = 0, sumDamp = 0; // this thread's energy terms
     bool anyDynamic = false;
-    if (!(dt > crit.dt)) // (the same answer in every thread)
-    for (long id = begin; id < end; ++id) {
+    // bodies lo .. hi-1 (each body's new state does not depend on the thread that computes it)
+    auto integrate = [&](long lo, long hi) {
+    for (long id = lo; id < hi; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
         if (!b) {
             mirror[id] = Vector3r::Constant(NaN);
@@ -154,8 +168,26 @@ void NewtonIntegrator::action() {
             st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
-    if (reference) // (this thread's bodies, just written: in cache; holes: NaN, ignored)
-        for (long id = begin; id < end; ++id) maxMoved2 = std::max(maxMoved2, (mirror[id] - reference[id]).squaredNorm());
+    if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
+        for (long id = lo; id < hi; ++id) maxMoved2 = std::max(maxMoved2, (mirror[id] - reference[id]).squaredNorm());
+    };
+    if (!(dt > crit.dt)) { // (the same answer in every thread)
+        ChunkQueue* mine = steal ? queues[omp_get_thread_num()].get() : nullptr;
+        if (!mine) integrate(begin, end);
+        else { // own chunks from the front, then the others' last ones (ChunkQueue.hpp)
+            mine->reset((unsigned)((end - begin + chunkBodies - 1) / chunkBodies));
+            unsigned c;
+            while (mine->takeFront(c)) integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies));
+            const int threads = omp_get_num_threads();
+            for (int other = 0; other < threads; ++other) {
+                ChunkQueue& q = *queues[other];
+                if (&q == mine) continue;
+                while (!q.published()) std::this_thread::yield();
+                const auto r = threadRange(n, other, threads);
+                while (q.takeBack(c)) integrate(r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies));
+            }
+        }
+    }
     if (anyDynamic) { // (a term appears once something was added to it, as in Yade)
         s.energy.add(gravId, sumGrav);
         s.energy.add(kinId, sumKin);

@@ -4,6 +4,9 @@
 #include <core/Engine.hpp>
 #include <core/Body.hpp>
 #include <core/State.hpp>
+#include <lib/base/ChunkQueue.hpp>
+#include <memory>
+#include <vector>
 #include <stdexcept>
 
 namespace yade {
@@ -37,6 +40,8 @@ public:
 
 private:
     Real lastCheckedDt = NaN;
+    static constexpr long chunkBodies = 256;
+    std::vector<std::unique_ptr<ChunkQueue>> queues; // per thread: its range's chunks (work stealing)
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
