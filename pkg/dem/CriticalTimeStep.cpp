@@ -45,7 +45,7 @@ void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep&
 } // namespace
 
 void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best) {
-    if (!scene.bodies.exists(id)) return;
+    if (!scene.bodies.exists(id) || !scene.bodies[id]->isDynamic()) return; // (lowest() would find nothing: a facet's many partners are not read)
     Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
     for (const auto& partner : scene.interactions.partnersOf(id)) {
         const Interaction* I = partner.second;

@@ -92,8 +92,8 @@ void NewtonIntegrator::action() {
     const long begin = range.first, end = range.second;
     if (checkFresh) {
         CriticalStep mine;
-#pragma omp for schedule(static) nowait
-        for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine);
+#pragma omp for schedule(dynamic, 16) nowait
+        for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine); // (any split: ties go to the smaller id)
 #pragma omp critical(yadeCriticalStep)
         if (mine.before(crit)) crit = mine;
 #pragma omp barrier
