@@ -172,18 +172,18 @@ void NewtonIntegrator::action() {
         for (long id = lo; id < hi; ++id) maxMoved2 = std::max(maxMoved2, (mirror[id] - reference[id]).squaredNorm());
     };
     if (!(dt > crit.dt)) { // (the same answer in every thread)
-        ChunkQueue* mine = steal ? queues[omp_get_thread_num()].get() : nullptr;
-        if (!mine) integrate(begin, end);
+        ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;
+        if (!myQueue) integrate(begin, end);
         else { // own chunks from the front, then the others' last ones (ChunkQueue.hpp)
-            mine->reset((unsigned)((end - begin + chunkBodies - 1) / chunkBodies));
+            myQueue->reset((unsigned)((end - begin + chunkBodies - 1) / chunkBodies));
             unsigned c;
-            while (mine->takeFront(c)) integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies));
-            const int threads = omp_get_num_threads();
-            for (int other = 0; other < threads; ++other) {
+            while (myQueue->takeFront(c)) integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies));
+            const int team = omp_get_num_threads();
+            for (int other = 0; other < team; ++other) {
                 ChunkQueue& q = *queues[other];
-                if (&q == mine) continue;
+                if (&q == myQueue) continue;
                 while (!q.published()) std::this_thread::yield();
-                const auto r = threadRange(n, other, threads);
+                const auto r = threadRange(n, other, team);
                 while (q.takeBack(c)) integrate(r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies));
             }
         }
