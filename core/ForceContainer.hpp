@@ -63,7 +63,6 @@ public:
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     // Adds the remote contributions (and, once per step, the permanent forces) to the totals.
     void sync();
-    bool isSynced() const { return synced; }
     // The totals (call sync() first), for loops over all bodies.
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }
