@@ -24,6 +24,19 @@ void EnergyTracker::setThreads(int n) {
     // room for many terms: the threads' slots then lie in separate cache lines (no false sharing)
     for (auto& t : perThread) t.reserve(std::max<size_t>(64, termNames.size()));
     for (auto& t : touchedThread) t.reserve(std::max<size_t>(512, termNames.size()));
+    captureTo.assign(perThread.size(), CaptureSlot());
+}
+
+void EnergyTracker::capture(std::vector<Captured>* into) {
+#ifdef _OPENMP
+    captureTo[omp_get_thread_num()].into = into;
+#else
+    captureTo[0].into = into;
+#endif
+}
+
+void EnergyTracker::applyCaptured(const std::vector<Captured>& list) {
+    for (const Captured& c : list) add(c.id, c.value);
 }
 
 void EnergyTracker::sync() {

@@ -22,9 +22,18 @@ public:
 #else
         const int t = 0;
 #endif
+        if (captureTo[t].into) return captureTo[t].into->push_back({id, value});
         perThread[t][id] += value;
         touchedThread[t][id] = 1;
     }
+    // Work stealing (as ForceContainer::capture): the calling thread's adds go, in order, to
+    // `into` until capture(nullptr); applyCaptured() adds such a list as the calling thread's own.
+    struct Captured {
+        int id;
+        Real value;
+    };
+    void capture(std::vector<Captured>* into);
+    void applyCaptured(const std::vector<Captured>& list);
     void setThreads(int n);
     void sync();             // adds the per-thread parts into the totals
     void resetInstantaneous(); // at the start of a step
@@ -44,6 +53,10 @@ private:
     std::map<std::string, int> index;
     std::vector<std::vector<Real>> perThread = std::vector<std::vector<Real>>(1);
     std::vector<std::vector<char>> touchedThread = std::vector<std::vector<char>>(1);
+    struct alignas(64) CaptureSlot {
+        std::vector<Captured>* into = nullptr;
+    };
+    std::vector<CaptureSlot> captureTo = std::vector<CaptureSlot>(1); // [thread]
 };
 
 } // namespace yade

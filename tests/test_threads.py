@@ -30,33 +30,39 @@ O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall
                              [Law2_ScGeom_FrictPhys_CundallStrack()]),
              NewtonIntegrator(gravity=(0, 0, -30), damping=0.4)]
 O.dt = .5 * PWaveTimeStep()
+O.trackEnergy = sys.argv[2] == 'energy'
 O.run(int(sys.argv[1]), True)
 h = hashlib.sha1()
 for b in O.bodies:
     h.update(struct.pack('12d', *(tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel) + tuple(O.forces.f(b.id)))))
-print("STATE", h.hexdigest(), "contacts", O.interactions.countReal())
+for name in sorted(O.energy.keys()):
+    h.update(name.encode() + struct.pack('d', O.energy[name]))
+print("STATE", h.hexdigest(), "contacts", O.interactions.countReal(), "energy terms", len(O.energy.keys()))
 '''
 
 
-def run(tmp_path, steps, threads=2):
+def run(tmp_path, steps, variant, threads=2):
     script = tmp_path / "pile.py"
     script.write_text(SCENE)
-    r = subprocess.run([sys.executable, str(LAUNCHER), "-n", "-x", "-j", str(threads), str(script), str(steps)],
+    r = subprocess.run([sys.executable, str(LAUNCHER), "-n", "-x", "-j", str(threads), str(script), str(steps), variant],
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stdout[-2000:] + r.stderr[-2000:]
     line = [l for l in r.stdout.splitlines() if l.startswith("STATE")][0].split()
-    return line[1], int(line[3])
+    return line[1], int(line[3]), int(line[6])
 
 
 @pytest.mark.skipif((os.cpu_count() or 1) < 2 or not shutil.which("taskset"), reason="needs 2 CPUs and taskset")
-def test_two_threads_give_the_same_bits_when_one_cpu_is_busy(tmp_path):
-    plain, contacts = run(tmp_path, 2500)
+@pytest.mark.parametrize("variant", ["plain", "energy"])
+def test_two_threads_give_the_same_bits_when_one_cpu_is_busy(tmp_path, variant):
+    # with energy tracking the energy terms too (the functors' and the integrator's)
+    plain, contacts, terms = run(tmp_path, 2500, variant)
     assert contacts > 1000  # a packing: the loop has real work
+    assert terms == (5 if variant == "energy" else 0)
     cpus = sorted(os.sched_getaffinity(0))
     hog = subprocess.Popen(["taskset", "-c", str(cpus[1]), sys.executable, "-c", "while True: pass"])
     try:
         time.sleep(0.2)
-        busy, _ = run(tmp_path, 2500)
+        busy, _, _ = run(tmp_path, 2500, variant)
     finally:
         hog.kill()
         hog.wait()

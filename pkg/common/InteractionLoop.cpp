@@ -226,9 +226,9 @@ void InteractionLoop::action() {
     // the forces of a chunk done for another list are kept (O.forces' capture) and added by the
     // list's thread after its own chunks, in chunk order: every force is added in the order the
     // list's thread alone would have added it, whoever computed it and however fast each thread
-    // ran (on shared machines one core is often slower than the other for seconds). Not with
-    // energy tracking: the functors' energy terms are summed per computing thread.
-    const bool steal = threads > 1 && !s.trackEnergy;
+    // ran (on shared machines one core is often slower than the other for seconds). The same for
+    // the functors' energy terms (O.energy's capture).
+    const bool steal = threads > 1;
     if (work.size() != (size_t)threads) {
         work.clear();
         for (int t = 0; t < threads; ++t) work.emplace_back(new ListWork);
@@ -334,6 +334,7 @@ void InteractionLoop::action() {
         }
         const unsigned chunks = steal ? (unsigned)((w.count + chunkEntries - 1) / chunkEntries) : 0;
         if (w.captured.size() < chunks) w.captured.resize(chunks);
+        if (w.capturedEnergy.size() < chunks) w.capturedEnergy.resize(chunks);
         w.queue.reset(chunks);
         if (!steal) process(list, 0, w.count);
     }
@@ -347,9 +348,12 @@ void InteractionLoop::action() {
             while (!w.queue.published()) std::this_thread::yield(); // (its thread is gathering the entries)
             while (w.queue.takeBack(c)) {
                 w.captured[c].clear();
+                w.capturedEnergy[c].clear();
                 s.forces.capture(&w.captured[c]);
+                s.energy.capture(&w.capturedEnergy[c]);
                 process(other, (size_t)c * chunkEntries, std::min(w.count, ((size_t)c + 1) * chunkEntries));
                 s.forces.capture(nullptr);
+                s.energy.capture(nullptr);
                 w.queue.markDone(c);
             }
         }
@@ -358,6 +362,7 @@ void InteractionLoop::action() {
             for (c = w.queue.stolenFrom(); c < w.queue.count(); ++c) {
                 w.queue.waitDone(c);
                 s.forces.applyCaptured(w.captured[c]);
+                s.energy.applyCaptured(w.capturedEnergy[c]);
             }
         }
     }

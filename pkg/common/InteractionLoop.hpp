@@ -3,6 +3,7 @@
 #pragma once
 #include <core/IGeomDispatcher.hpp>
 #include <core/IPhysDispatcher.hpp>
+#include <core/EnergyTracker.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/LawDispatcher.hpp>
 #include <lib/base/ChunkQueue.hpp>
@@ -109,6 +110,7 @@ private:
         size_t count = 0;                 // entries to test
         const unsigned* todo = nullptr;   // their positions in the list (nullptr: all, in order)
         std::vector<std::vector<ForceContainer::Captured>> captured; // per chunk done by another thread
+        std::vector<std::vector<EnergyTracker::Captured>> capturedEnergy;
     };
     std::vector<std::unique_ptr<ListWork>> work;
     struct {

@@ -39,6 +39,12 @@ static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
     return a;
 }
 
+void NewtonIntegrator::addEnergy(Scene& s, const EnergySums& e, int gravId, int kinId, int dampId) const {
+    s.energy.add(gravId, e.grav); // (a term appears once something was added to it, as in Yade)
+    s.energy.add(kinId, e.kin);
+    if (damping != 0) s.energy.add(dampId, e.damp);
+}
+
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     const Real dt = s.dt;
@@ -75,16 +81,18 @@ void NewtonIntegrator::action() {
     const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
     Real maxMoved2 = 0;
     // With several threads a thread that is done helps with the others' last bodies (on shared
-    // machines a core is often slower than the other for a while); not with energy tracking,
-    // whose sums are per thread.
+    // machines a core is often slower than the other for a while); the energy terms are then
+    // summed per chunk, and the chunks in order after the loop.
     int threads = 1;
 #ifdef _OPENMP
     threads = omp_get_max_threads();
 #endif
-    const bool steal = threads > 1 && !energy;
+    const bool steal = threads > 1;
     if (steal) {
         while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
         for (auto& q : queues) q->unpublish();
+        chunkSums.resize(threads);
+        for (auto& sums : chunkSums) sums.clear(); // (a thread that does not come leaves its range's empty)
     }
 #pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2)
     {
@@ -98,10 +106,9 @@ void NewtonIntegrator::action() {
         if (mine.before(crit)) crit = mine;
 #pragma omp barrier
     }
-    Real sumGrav = 0, sumKin = 0, sumDamp = 0; // this thread's energy terms
-    bool anyDynamic = false;
-    // bodies lo .. hi-1 (each body's new state does not depend on the thread that computes it)
-    auto integrate = [&](long lo, long hi) {
+    EnergySums mySums; // this thread's energy terms (without work stealing)
+    // bodies lo .. hi-1, energy terms into e (each body's new state does not depend on the thread that computes it)
+    auto integrate = [&](long lo, long hi, EnergySums& e) {
     for (long id = lo; id < hi; ++id) {
         const Body* b = s.bodies[(Body::id_t)id].get();
         if (!b) {
@@ -149,11 +156,11 @@ void NewtonIntegrator::action() {
         st.angVel = angVel;
         st.pos = pos;
         mirror[id] = pos;
-        if (energy && dynamic) { // summed in registers, added to O.energy once per thread (below)
-            sumGrav += eGrav;
-            sumKin += eKin;
-            sumDamp += eDamp;
-            anyDynamic = true;
+        if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
+            e.grav += eGrav;
+            e.kin += eKin;
+            e.damp += eDamp;
+            e.any = true;
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
@@ -173,26 +180,37 @@ void NewtonIntegrator::action() {
     };
     if (!(dt > crit.dt)) { // (the same answer in every thread)
         ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;
-        if (!myQueue) integrate(begin, end);
-        else { // own chunks from the front, then the others' last ones (ChunkQueue.hpp)
-            myQueue->reset((unsigned)((end - begin + chunkBodies - 1) / chunkBodies));
+        if (!myQueue) integrate(begin, end, mySums);
+        else { // own chunks from the front, then the others' last ones (ChunkQueue.hpp); energy per chunk
+            const unsigned chunks = (unsigned)((end - begin + chunkBodies - 1) / chunkBodies);
+            chunkSums[omp_get_thread_num()].assign(chunks, EnergySums());
+            myQueue->reset(chunks);
             unsigned c;
-            while (myQueue->takeFront(c)) integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies));
+            while (myQueue->takeFront(c))
+                integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies), chunkSums[omp_get_thread_num()][c]);
             const int team = omp_get_num_threads();
             for (int other = 0; other < team; ++other) {
                 ChunkQueue& q = *queues[other];
                 if (&q == myQueue) continue;
                 while (!q.published()) std::this_thread::yield();
                 const auto r = threadRange(n, other, team);
-                while (q.takeBack(c)) integrate(r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies));
+                while (q.takeBack(c)) integrate(r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies), chunkSums[other][c]);
             }
         }
     }
-    if (anyDynamic) { // (a term appears once something was added to it, as in Yade)
-        s.energy.add(gravId, sumGrav);
-        s.energy.add(kinId, sumKin);
-        if (lambda != 0) s.energy.add(dampId, sumDamp);
+    if (mySums.any) addEnergy(s, mySums, gravId, kinId, dampId);
     }
+    if (steal && energy) { // per range, chunk by chunk in order: the same sums whoever computed each chunk
+        for (int t = 0; t < threads; ++t) {
+            EnergySums range;
+            for (const EnergySums& e : chunkSums[t]) {
+                range.grav += e.grav;
+                range.kin += e.kin;
+                range.damp += e.damp;
+                range.any |= e.any;
+            }
+            if (range.any) addEnergy(s, range, gravId, kinId, dampId);
+        }
     }
     if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
     s.positionMirror.iter = s.iter;

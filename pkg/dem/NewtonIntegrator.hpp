@@ -42,6 +42,12 @@ private:
     Real lastCheckedDt = NaN;
     static constexpr long chunkBodies = 256;
     std::vector<std::unique_ptr<ChunkQueue>> queues; // per thread: its range's chunks (work stealing)
+    struct EnergySums {
+        Real grav = 0, kin = 0, damp = 0;
+        bool any = false; // a dynamic body was integrated
+    };
+    std::vector<std::vector<EnergySums>> chunkSums; // per thread range, per chunk
+    void addEnergy(Scene& s, const EnergySums& e, int gravId, int kinId, int dampId) const;
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
