@@ -46,11 +46,8 @@ void ForceContainer::sync() {
     if (synced) return;
     const size_t n = force.size();
     for (auto& list : remote) {
-        for (const Remote& r : list.items)
-            if ((size_t)r.id < n) { // (bodies removed since: dropped)
-                force[r.id] += r.force;
-                torque[r.id] += r.torque;
-            }
+        for (const Contribution& c : list.items)
+            if ((size_t)c.id < n) addInPlace(c); // (bodies removed since: dropped)
         list.items.clear();
     }
     if (anyPermanent && !permInTotals) {
@@ -66,17 +63,7 @@ void ForceContainer::sync() {
 
 void ForceContainer::applyCaptured(const std::vector<Captured>& list) {
     const int th = thread();
-    RemoteList& mine = remote[th];
-    for (const Captured& c : list) {
-        if (!owns(th, c.id)) mine.items.push_back({c.id, c.f, c.t}); // (zero where the kind has none, as addForce's)
-        else if (c.kind == Captured::force) force[c.id] += c.f;
-        else if (c.kind == Captured::torque) torque[c.id] += c.t;
-        else {
-            force[c.id] += c.f;
-            torque[c.id] += c.t;
-        }
-    }
-    if (!list.empty()) markUnsynced();
+    for (const Captured& c : list) put(th, c);
 }
 
 void ForceContainer::reset() {

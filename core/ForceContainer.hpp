@@ -22,37 +22,13 @@ public:
     int threads() const { return (int)remote.size(); }
     void resize(size_t nBodies);
     size_t size() const { return force.size(); }
-    void addForce(int id, const Vector3r& f) {
-        const int th = thread();
-        if (remote[th].capture) remote[th].capture->push_back({id, Captured::force, f, Vector3r::Zero()});
-        else if (owns(th, id)) force[id] += f;
-        else remote[th].items.push_back({id, f, Vector3r::Zero()});
-        markUnsynced();
-    }
-    void addTorque(int id, const Vector3r& t) {
-        const int th = thread();
-        if (remote[th].capture) remote[th].capture->push_back({id, Captured::torque, Vector3r::Zero(), t});
-        else if (owns(th, id)) torque[id] += t;
-        else remote[th].items.push_back({id, Vector3r::Zero(), t});
-        markUnsynced();
-    }
+    void addForce(int id, const Vector3r& f) { put(thread(), {id, Contribution::force, f, Vector3r::Zero()}); }
+    void addTorque(int id, const Vector3r& t) { put(thread(), {id, Contribution::torque, Vector3r::Zero(), t}); }
     // A contact's force on body 1 (its opposite on body 2) and the torques on both.
     void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
         const int th = thread();
-        if (remote[th].capture) {
-            remote[th].capture->push_back({id1, Captured::both, f1, t1});
-            remote[th].capture->push_back({id2, Captured::both, -f1, t2});
-            return markUnsynced();
-        }
-        if (owns(th, id1)) {
-            force[id1] += f1;
-            torque[id1] += t1;
-        } else remote[th].items.push_back({id1, f1, t1});
-        if (owns(th, id2)) {
-            force[id2] -= f1;
-            torque[id2] += t2;
-        } else remote[th].items.push_back({id2, -f1, t2});
-        markUnsynced();
+        put(th, {id1, Contribution::both, f1, t1});
+        put(th, {id2, Contribution::both, -f1, t2});
     }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
@@ -68,15 +44,16 @@ public:
     const Vector3r* torqueData() const { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
+    // One body's share of an add: a force, a torque or both.
+    struct Contribution {
+        int id;
+        enum Kind : char { both, force, torque } kind;
+        Vector3r f, t;
+    };
     // Work stealing (ChunkQueue.hpp): what the calling thread adds goes, in order, to `into`
     // until capture(nullptr); applyCaptured() then adds such a list as if the calling thread
     // added it now (so a chunk computed by another thread gives the same sums).
-    struct Captured {
-        enum Kind : char { both, force, torque } kind;
-        int id;
-        Vector3r f, t;
-        Captured(int id_, Kind k, const Vector3r& f_, const Vector3r& t_) : kind(k), id(id_), f(f_), t(t_) {}
-    };
+    using Captured = Contribution;
     void capture(std::vector<Captured>* into) { remote[thread()].capture = into; }
     void applyCaptured(const std::vector<Captured>& list);
 
@@ -89,6 +66,18 @@ private:
     }
     // whether body id is in thread th's range (with one thread: every body)
     bool owns(int th, int id) const { return id >= rangeStart[th] && id < rangeStart[th + 1]; }
+    // One contribution of thread th: captured, in place (its own range) or to its remote list.
+    void put(int th, const Contribution& c) {
+        RemoteList& mine = remote[th];
+        if (mine.capture) mine.capture->push_back(c);
+        else if (!owns(th, c.id)) mine.items.push_back(c);
+        else addInPlace(c);
+        markUnsynced();
+    }
+    void addInPlace(const Contribution& c) {
+        if (c.kind != Contribution::torque) force[c.id] += c.f;
+        if (c.kind != Contribution::force) torque[c.id] += c.t;
+    }
     void setRanges();
     static int thread() {
 #ifdef _OPENMP
@@ -97,13 +86,9 @@ private:
         return 0;
 #endif
     }
-    struct Remote {
-        int id;
-        Vector3r force, torque;
-    };
     std::vector<Vector3r> force, torque, permForce, permTorque; // [body]
     struct alignas(64) RemoteList { // (a cache line each: the threads append to their own lists at the same time)
-        std::vector<Remote> items;      // in the order added
+        std::vector<Contribution> items; // to other ranges, in the order added
         std::vector<Captured>* capture = nullptr;
     };
     std::vector<RemoteList> remote; // [thread]
