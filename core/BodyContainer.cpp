@@ -3,28 +3,64 @@
 
 namespace yade {
 
+BodyContainer::~BodyContainer() { unbindAll(); }
+
+void BodyContainer::attach(Body& b) {
+    b.store = store;
+    b.state->bind(store, b.id, b.mask);
+    b.boundState = b.state;
+}
+
+void BodyContainer::detach(Body& b) {
+    if (b.state) b.state->unbind();
+    b.store.reset();
+    b.boundState.reset();
+}
+
+void BodyContainer::unbindAll() {
+    for (const auto& b : bodies)
+        if (b) detach(*b);
+}
+
 BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
     if (!b) throw std::invalid_argument("cannot append None to O.bodies");
     if (b->id >= 0)
         throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
+    if (!b->state) throw std::invalid_argument("cannot append a body whose state is None");
     b->id = static_cast<id_t>(bodies.size());
     bodies.push_back(b);
+    attach(*b);
     ++changes;
     return b->id;
 }
 
 void BodyContainer::erase(id_t id) {
     if (!exists(id)) throw std::out_of_range("Body #" + std::to_string(id) + " does not exist.");
+    detach(*bodies[id]);
     bodies[id]->id = -1;
     bodies[id].reset();
     ++changes;
 }
 
+void BodyContainer::clear() {
+    unbindAll();
+    bodies.clear();
+    store->records.resize(0);
+    ++changes;
+}
+
 void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long changeCount) {
-    for (size_t i = 0; i < all.size(); ++i)
+    for (size_t i = 0; i < all.size(); ++i) {
         if (all[i] && all[i]->id != (id_t)i)
             throw std::invalid_argument("body at position " + std::to_string(i) + " has id " + std::to_string(all[i]->id));
+        if (all[i] && !all[i]->state) throw std::invalid_argument("body #" + std::to_string(i) + " has no state");
+    }
+    unbindAll();
     bodies = std::move(all);
+    store->records.resize(0);
+    store->records.resize(bodies.size());
+    for (const auto& b : bodies)
+        if (b) attach(*b);
     changes = changeCount;
 }
 

@@ -8,6 +8,10 @@ namespace yade {
 class BodyContainer {
 public:
     using id_t = Body::id_t;
+    BodyContainer() = default;
+    BodyContainer(const BodyContainer&) = delete;
+    BodyContainer& operator=(const BodyContainer&) = delete;
+    ~BodyContainer(); // the bodies' states keep their values (unbound)
     // Appends a body that is not yet in a scene; returns its new id.
     id_t insert(const std::shared_ptr<Body>& b);
     bool exists(id_t id) const { return id >= 0 && (size_t)id < bodies.size() && bodies[id]; }
@@ -16,10 +20,11 @@ public:
     void erase(id_t id);                          // the scene removes the body's interactions first
     // Replaces the whole content (loading a file): entry i must be null or have id i.
     void restore(std::vector<std::shared_ptr<Body>> all, long long changeCount);
-    void clear() {
-        bodies.clear();
-        ++changes;
-    }
+    void clear();
+    // The hot state of every body, indexed by id (State objects of bodies here are views of it).
+    BodyStore& hot() { return *store; }
+    const BodyStore& hot() const { return *store; }
+    const std::shared_ptr<BodyStore>& hotStore() const { return store; }
     // Incremented by every insert, erase and clear (colliders rebuild their lists when it changes).
     long long changes = 0;
     auto begin() const { return bodies.begin(); }
@@ -27,6 +32,10 @@ public:
 
 private:
     std::vector<std::shared_ptr<Body>> bodies;
+    std::shared_ptr<BodyStore> store = std::make_shared<BodyStore>();
+    void attach(Body& b); // binds its state to record b.id
+    void detach(Body& b);
+    void unbindAll();
 };
 
 } // namespace yade

@@ -6,6 +6,13 @@
 
 namespace yade {
 
+// What a batch of contacts reads about the bodies, indexed by id: their records (the store's)
+// and their shapes (null for holes).
+struct BodyColumns {
+    const BodyHot* hot = nullptr;
+    const Shape* const* shape = nullptr;
+};
+
 class IGeomFunctor : public Functor {
 public:
     template <class V> void visit(V& v) { Functor::visit(v); }
@@ -17,6 +24,35 @@ public:
     // two spheres farther apart than this factor × (r1 + r2), or a sphere whose center is farther
     // than this factor × r from a facet's plane, are not in contact (negative: no such promise).
     virtual Real quickRejectFactor() const { return -1; }
+    // The batched form: the geometry of the potential or real interactions I[0] .. I[n-1], all
+    // of one pair of shape types taken in this functor's order; result[j] is go()'s answer for
+    // I[j]. The default calls go() once per contact (an adapter for functors written in the
+    // one-contact form); the library's functors derive from IGeomFunctorBatched.
+    virtual void goBatch(const BodyColumns& bodies, Interaction* const* I, size_t n, char* result);
+};
+
+// A library Ig2 functor: Derived has a non-virtual
+//   bool go(const S1&, const S2&, const BodyHot&, const BodyHot&, const Vector3r& shift2, bool force, Interaction&)
+// that reads the bodies' records; goBatch() calls it in a loop with no virtual call per contact.
+template <class Derived, class S1, class S2, class G> class IGeomFunctorBatched : public IGeomFunctor {
+public:
+    std::vector<std::string> argTypes() const override { return {registeredName<S1>(), registeredName<S2>()}; }
+    std::string producedType() const override { return registeredName<G>(); }
+    bool go(const Shape& s1, const Shape& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
+            Interaction& I) final {
+        return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.hot(), st2.hot(), shift2, force, I);
+    }
+    void goBatch(const BodyColumns& b, Interaction* const* I, size_t n, char* result) final {
+        Derived& d = self();
+        for (size_t j = 0; j < n; ++j) {
+            Interaction& i = *I[j];
+            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[i.id1]), static_cast<const S2&>(*b.shape[i.id2]), b.hot[i.id1],
+                    b.hot[i.id2], Vector3r::Zero(), false, i);
+        }
+    }
+
+private:
+    Derived& self() { return static_cast<Derived&>(*this); }
 };
 
 template <class S1, class S2, class G> class IGeomFunctorOf : public IGeomFunctor {
@@ -47,7 +83,11 @@ public:
         return true;
     }
     const DispatchTable2D<IGeomFunctor>::Entry& getFunctor(const Shape& a, const Shape& b) {
-        return table.get(a.getClassIndex(), b.getClassIndex(), functors, "Shape", "Shape", true);
+        return getFunctor(a.getClassIndex(), b.getClassIndex());
+    }
+    // By class indices (Shape::getClassIndex()), for loops that keep them in a column.
+    const DispatchTable2D<IGeomFunctor>::Entry& getFunctor(int index1, int index2) {
+        return table.get(index1, index2, functors, "Shape", "Shape", true);
     }
 
 private:

@@ -7,14 +7,14 @@ namespace yade {
 static const char dofLetters[] = "xyzXYZ";
 
 Vector3r State::rot() const {
-    AngleAxisr aa(refOri.conjugate() * ori);
+    AngleAxisr aa(refOri.conjugate() * ori());
     return aa.axis() * aa.angle();
 }
 
 std::string State::blockedDOFs() const {
     std::string s;
     for (int i = 0; i < 6; ++i)
-        if (blockedDOFsMask & (1 << i)) s += dofLetters[i];
+        if (blockedDOFsMask() & (1 << i)) s += dofLetters[i];
     return s;
 }
 
@@ -25,7 +25,27 @@ void State::setBlockedDOFs(const std::string& dofs) {
         if (!p) throw std::invalid_argument(std::string("blockedDOFs: invalid letter '") + c + "' (use letters from 'xyzXYZ')");
         mask |= 1 << (p - dofLetters);
     }
-    blockedDOFsMask = mask;
+    blockedDOFsMask() = mask;
+}
+
+void State::bind(const std::shared_ptr<BodyStore>& s, long id, int bodyMask) {
+    if (slot >= 0) unbind();
+    if ((size_t)id >= s->size()) s->records.resize((size_t)id + 1);
+    BodyHot& r = (*s)[(size_t)id];
+    r = local;
+    r.mask = bodyMask;
+    r.exists = true;
+    store = s;
+    slot = id;
+}
+
+void State::unbind() {
+    if (slot < 0) return;
+    BodyHot& r = (*store)[(size_t)slot];
+    local = r;
+    local.exists = false;
+    r.exists = false;
+    slot = -1;
 }
 
 } // namespace yade

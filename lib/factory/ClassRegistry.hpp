@@ -66,6 +66,10 @@ private:
     ClassInfo& insert(const char* name, const char* baseName, const std::type_info& t);
 };
 
+// Classes whose hot attributes live in a record elsewhere while bound: T::hasHotRecord, T::local, T::hot().
+template <class T, class = void> struct HasHotRecord : std::false_type {};
+template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>> : std::bool_constant<T::hasHotRecord> {};
+
 // Builds the AttrInfo table of class T by visiting a prototype instance.
 template <class T> struct AttrCollector {
     T& proto;
@@ -78,6 +82,14 @@ template <class T> struct AttrCollector {
         a.kind = AttrKindOf<M>::kind;
         const std::ptrdiff_t offset = reinterpret_cast<char*>(&member) - reinterpret_cast<char*>(&proto);
         a.address = [offset](Serializable& s) -> void* { return reinterpret_cast<char*>(static_cast<T*>(&s)) + offset; };
+        if constexpr (HasHotRecord<T>::value) { // a member of the record kept in a store while bound (State)
+            const char* lo = reinterpret_cast<const char*>(&proto.local);
+            const char* m = reinterpret_cast<const char*>(&member);
+            if (m >= lo && m < lo + sizeof(proto.local)) {
+                const std::ptrdiff_t inRecord = m - lo;
+                a.address = [inRecord](Serializable& s) -> void* { return reinterpret_cast<char*>(&static_cast<T&>(s).hot()) + inRecord; };
+            }
+        }
         if constexpr (AttrKindOf<M>::kind == AttrKind::Ptr) {
             using P = typename M::element_type;
             a.pointee = &typeid(P);

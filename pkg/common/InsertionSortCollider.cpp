@@ -30,7 +30,7 @@ bool InsertionSortCollider::needsRun() {
     for (long id = 0; id < n; ++id) {
         const Body* b = bodies[(Body::id_t)id].get();
         if (!b || !b->shape || !b->bound) continue; // bodies without a Bo1 functor take no part
-        moved |= (b->state->pos - b->bound->refPos).squaredNorm() > limit2; // (3.1.6)
+        moved |= (b->state->pos() - b->bound->refPos).squaredNorm() > limit2; // (3.1.6)
     }
     return moved != 0;
 }
@@ -42,7 +42,7 @@ void InsertionSortCollider::updateBounds() {
 #pragma omp parallel for schedule(static) reduction(min : minRadius) reduction(max : extent)
     for (long id = 0; id < n; ++id) {
         const Body* b = bodies[(Body::id_t)id].get();
-        if (b) extent = std::max(extent, b->state->pos.cwiseAbs().maxCoeff()); // (NaN: ignored)
+        if (b) extent = std::max(extent, b->state->pos().cwiseAbs().maxCoeff()); // (NaN: ignored)
         if (b && b->shape)
             if (const auto* s = dynamic_cast<const Sphere*>(b->shape.get())) minRadius = std::min(minRadius, s->radius);
     }
@@ -69,7 +69,7 @@ void InsertionSortCollider::updateBounds() {
         f->go(*b->shape, b->bound, *b->state, *b);
         b->bound->min -= Vector3r::Constant(sweep);
         b->bound->max += Vector3r::Constant(sweep);
-        b->bound->refPos = b->state->pos;
+        b->bound->refPos = b->state->pos();
         b->bound->lastUpdateIter = scene->iter;
         boxes[id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->isDynamic(), true};
     }

@@ -46,6 +46,35 @@ void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");
 }
 
+void InteractionLoop::prepareShapes() {
+    const BodyContainer& bodies = scene->bodies;
+    const long n = (long)bodies.size();
+    ShapeCache& cache = shapeCache;
+    if (cache.changes == bodies.changes && cache.writes == externalWrites() && cache.scene == scene->serial && cache.radius.size() == (size_t)n)
+        return;
+    cache.writes = externalWrites();
+    cache.changes = bodies.changes;
+    cache.scene = scene->serial;
+    cache.radius.assign(n, NaN);
+    cache.shape.assign(n, nullptr);
+    cache.shapeIndex.assign(n, -1);
+    cache.facetIds.clear();
+    const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
+    for (long id = 0; id < n; ++id) {
+        const Body* b = bodies[(Body::id_t)id].get();
+        if (!b || !b->shape) continue;
+        const int c = b->shape->getClassIndex();
+        cache.shape[id] = b->shape.get();
+        cache.shapeIndex[id] = c;
+        if (c == sphereIndex) cache.radius[id] = static_cast<const Sphere&>(*b->shape).radius;
+        else if (c == facetIndex) { // few facets: in id order
+            cache.radius[id] = -1 - (Real)cache.facetIds.size();
+            cache.facetIds.push_back((Body::id_t)id);
+        }
+    }
+    cacheBuilt = true;
+}
+
 bool InteractionLoop::prepareQuickReject() {
     Sphere sphereProbe;
     Facet facetProbe;
@@ -56,38 +85,20 @@ bool InteractionLoop::prepareQuickReject() {
     if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
     const long n = (long)bodies.size();
-    ShapeCache& cache = shapeCache;
-    quickFromMirror = cache.changes == bodies.changes && cache.writes == externalWrites() && cache.scene == scene->serial
-            && cache.radius.size() == (size_t)n && scene->positionsCurrent();
-    if (quickFromMirror) { // shapes unchanged: the integrator's positions and the cached radii
+    quickFromMirror = !cacheBuilt && scene->positionsCurrent();
+    if (quickFromMirror) { // shapes unchanged: the integrator's positions
         shapePos = scene->positionMirror.pos.data();
-    } else { // from the bodies; the radii (and facet markers) are kept for the next steps
-        cache.writes = externalWrites();
-        cache.changes = bodies.changes;
-        cache.scene = scene->serial;
-        cache.radius.assign(n, NaN);
-        cache.facetIds.clear();
+    } else { // from the bodies' records
         quickPos.resize(n);
-        const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
-#pragma omp parallel for schedule(static)
-        for (long id = 0; id < n; ++id) {
-            const Body* b = bodies[(Body::id_t)id].get();
-            if (b && b->shape && b->shape->getClassIndex() == sphereIndex) cache.radius[id] = static_cast<const Sphere&>(*b->shape).radius;
-            quickPos[id] = b ? b->state->pos : Vector3r::Constant(NaN);
-        }
-        for (long id = 0; id < n; ++id) { // few facets: gathered serially, in id order
-            const Body* b = bodies[(Body::id_t)id].get();
-            if (!b || !b->shape || b->shape->getClassIndex() != facetIndex) continue;
-            cache.radius[id] = -1 - (Real)cache.facetIds.size();
-            cache.facetIds.push_back((Body::id_t)id);
-        }
+        const BodyHot* hot = bodies.hot().data();
+        for (long id = 0; id < n; ++id) quickPos[id] = hot[id].exists ? hot[id].pos : Vector3r::Constant(NaN);
         shapePos = quickPos.data();
     }
-    shapeRadius = cache.radius.data();
+    shapeRadius = shapeCache.radius.data();
     facetPlanes.clear(); // facets may move or turn: their planes are computed every step
-    for (Body::id_t id : cache.facetIds) {
+    for (Body::id_t id : shapeCache.facetIds) {
         const Body& b = *bodies[id];
-        facetPlanes.push_back(FacetPlane{b.state->pos, b.state->ori * static_cast<const Facet&>(*b.shape).normal});
+        facetPlanes.push_back(FacetPlane{b.state->pos(), b.state->ori() * static_cast<const Facet&>(*b.shape).normal});
     }
     return true;
 }
@@ -191,6 +202,134 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     ++threadPairsBuild;
 }
 
+// Starts loading the first cache lines of an object (none: null).
+static inline void prefetchObject(const void* p, int lines = 3) {
+    if (!p) return;
+    const char* c = static_cast<const char*>(p);
+    for (int l = 0; l < lines; ++l) __builtin_prefetch(c + 64 * l);
+}
+
+// Entries j0 .. j1-1 of thread list `list` (at most batchEntries): quick rejects, then the Ig2
+// functors over batches of one shape-type pair, Ip2 for new contacts, and the Law2 functors over
+// runs of one (IGeom, IPhys) pair in list order (forces are added in the order of the list).
+void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
+        std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
+    Scene& s = *scene;
+    InteractionContainer& intrs = s.interactions;
+    const std::vector<long>& pairs = threadPairs[list];
+    Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    const unsigned* todo = work[list]->todo;
+    const int* shapeIndex = shapeCache.shapeIndex.data();
+    const Shape* const* shapes = shapeCache.shape.data();
+    Scratch& sc = *scratch[threadNumber()];
+    sc.entries.clear();
+    // 1. the pairs to compute, and their Ig2 functor
+    for (size_t j = j0; j < j1; ++j) {
+        const size_t i = todo ? todo[j] : j;
+        const long k = pairs[i];
+        Real gap;
+        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
+            if (gaps) gaps[i] = gap - twiceD;
+            continue; // still apart
+        }
+        if (gaps) gaps[i] = -Inf; // tested again at the next step
+        Interaction& I = *intrs[(size_t)k];
+        const int c1 = shapeIndex[I.id1], c2 = shapeIndex[I.id2];
+        if (c1 < 0 || c2 < 0) continue; // a body without shape
+        const auto& geomEntry = geomDispatcher->getFunctor(c1, c2);
+        if (!geomEntry.functor) {
+#pragma omp critical(yadeMissing)
+            missingIg2.emplace_back(shapes[I.id1], shapes[I.id2]);
+            continue;
+        }
+        if (geomEntry.swap) { // the functor takes the shapes in the other order
+            I.swapOrder();
+            intrs.pairIds[2 * k] = I.id1;
+            intrs.pairIds[2 * k + 1] = I.id2;
+        }
+        sc.entries.push_back(Scratch::Entry{k, &I, geomEntry.functor, nullptr, 0});
+        // the functors read the contact's objects after the whole batch is gathered: their loads
+        // are started now, all at once, instead of one contact after the other
+        prefetchObject(I.geom.get());
+        prefetchObject(I.phys.get());
+    }
+    const size_t n = sc.entries.size();
+    if (n == 0) return;
+    // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
+    const BodyColumns columns{s.bodies.hot().data(), shapes};
+    for (size_t first = 0; first < n; ++first) {
+        IGeomFunctor* f = sc.entries[first].geom;
+        if (!f) continue; // done
+        sc.batch.clear();
+        sc.where.clear();
+        for (size_t e = first; e < n; ++e)
+            if (sc.entries[e].geom == f) {
+                sc.batch.push_back(sc.entries[e].I);
+                sc.where.push_back(e);
+            }
+        sc.flags.resize(sc.batch.size());
+        f->goBatch(columns, sc.batch.data(), sc.batch.size(), sc.flags.data());
+        for (size_t m = 0; m < sc.where.size(); ++m) {
+            sc.entries[sc.where[m]].geom = nullptr;
+            sc.entries[sc.where[m]].real = sc.flags[m];
+        }
+    }
+    // 3. in list order: contacts that ended, physics of new ones, and each one's Law2 functor
+    const BodyContainer& bodies = s.bodies;
+    size_t live = 0;
+    for (size_t e = 0; e < n; ++e) {
+        Scratch::Entry& x = sc.entries[e];
+        Interaction& I = *x.I;
+        if (!x.real) {
+            if (I.isReal()) I.reset(); // the geometry says the contact is over
+            setWasReal(intrs, x.k, false);
+            continue;
+        }
+        if (!I.phys) {
+            const Body& b1 = *bodies[I.id1];
+            const Body& b2 = *bodies[I.id2];
+            if (!b1.material || !b2.material) continue;
+            const auto& physEntry = physDispatcher->getFunctor(*b1.material, *b2.material);
+            if (!physEntry.functor) {
+#pragma omp critical(yadeError)
+                error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
+                        + " (bodies #" + std::to_string(I.id1) + " and #" + std::to_string(I.id2) + ")";
+                continue;
+            }
+            physEntry.functor->go(b1.material, b2.material, I);
+            I.iterMadeReal = s.iter;
+#pragma omp critical(yadeNewContact)
+            {
+                s.newContactBodies.push_back(I.id1);
+                s.newContactBodies.push_back(I.id2);
+            }
+        }
+        const auto& lawEntry = lawDispatcher->getFunctor(*I.geom, *I.phys);
+        if (!lawEntry.functor) {
+#pragma omp critical(yadeError)
+            error = "no Law2 functor for " + I.geom->getClassName() + "+" + I.phys->getClassName();
+            continue;
+        }
+        x.law = lawEntry.functor;
+        sc.entries[live++] = x;
+    }
+    // 4. forces: runs of one Law2 functor, in list order
+    for (size_t first = 0; first < live;) {
+        LawFunctor* f = sc.entries[first].law;
+        size_t last = first;
+        sc.batch.clear();
+        while (last < live && sc.entries[last].law == f) sc.batch.push_back(sc.entries[last++].I);
+        sc.flags.resize(sc.batch.size());
+        f->goBatch(sc.batch.data(), sc.batch.size(), sc.flags.data());
+        for (size_t e = first; e < last; ++e) {
+            Interaction& I = *sc.entries[e].I;
+            if (!sc.flags[e - first]) I.reset(); // back to a potential interaction
+            setWasReal(intrs, sc.entries[e].k, I.isReal());
+        }
+        first = last;
+    }
+}
+
 void InteractionLoop::action() {
     Scene& s = *scene;
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
@@ -207,7 +346,13 @@ void InteractionLoop::action() {
 #ifdef _OPENMP
     threads = omp_get_max_threads();
 #endif
+    cacheBuilt = false;
+    prepareShapes();
     const bool quick = fastPath && prepareQuickReject();
+    if ((int)scratch.size() < threads) {
+        scratch.clear();
+        for (int t = 0; t < threads; ++t) scratch.emplace_back(new Scratch);
+    }
     std::vector<std::pair<const Shape*, const Shape*>> missingIg2;
     std::string error;
     if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
@@ -252,66 +397,7 @@ void InteractionLoop::action() {
     const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
     // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin)
     auto process = [&](int list, size_t j0, size_t j1) {
-    const std::vector<long>& pairs = threadPairs[list];
-    Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
-    const unsigned* todo = work[list]->todo;
-    for (size_t j = j0; j < j1; ++j) {
-        const size_t i = todo ? todo[j] : j;
-        const long k = pairs[i];
-        Real gap;
-        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
-            if (gaps) gaps[i] = gap - twiceD;
-            continue; // still apart
-        }
-        if (gaps) gaps[i] = -Inf; // tested again at the next step
-        Interaction& I = *intrs[(size_t)k];
-        const Body* b1 = bodies[I.id1].get();
-        const Body* b2 = bodies[I.id2].get();
-        if (!b1 || !b2 || !b1->shape || !b2->shape) continue;
-        const auto& geomEntry = geomDispatcher->getFunctor(*b1->shape, *b2->shape);
-        if (!geomEntry.functor) {
-#pragma omp critical(yadeMissing)
-            missingIg2.emplace_back(b1->shape.get(), b2->shape.get());
-            continue;
-        }
-        if (geomEntry.swap) { // the functor takes the shapes in the other order
-            I.swapOrder();
-            std::swap(b1, b2);
-            intrs.pairIds[2 * k] = I.id1;
-            intrs.pairIds[2 * k + 1] = I.id2;
-        }
-        const bool wasReal = I.isReal();
-        if (!geomEntry.functor->go(*b1->shape, *b2->shape, *b1->state, *b2->state, Vector3r::Zero(), false, I)) {
-            if (wasReal) I.reset(); // the geometry says the contact is over
-            setWasReal(intrs, k, false);
-            continue;
-        }
-        if (!I.phys) {
-            if (!b1->material || !b2->material) continue;
-            const auto& physEntry = physDispatcher->getFunctor(*b1->material, *b2->material);
-            if (!physEntry.functor) {
-#pragma omp critical(yadeError)
-                error = "no Ip2 functor for " + b1->material->getClassName() + "+" + b2->material->getClassName()
-                        + " (bodies #" + std::to_string(I.id1) + " and #" + std::to_string(I.id2) + ")";
-                continue;
-            }
-            physEntry.functor->go(b1->material, b2->material, I);
-            I.iterMadeReal = s.iter;
-#pragma omp critical(yadeNewContact)
-            {
-                s.newContactBodies.push_back(I.id1);
-                s.newContactBodies.push_back(I.id2);
-            }
-        }
-        const auto& lawEntry = lawDispatcher->getFunctor(*I.geom, *I.phys);
-        if (!lawEntry.functor) {
-#pragma omp critical(yadeError)
-            error = "no Law2 functor for " + I.geom->getClassName() + "+" + I.phys->getClassName();
-            continue;
-        }
-        if (!lawEntry.functor->go(*I.geom, *I.phys, I)) I.reset(); // back to a potential interaction
-        setWasReal(intrs, k, I.isReal());
-    }
+        for (size_t b0 = j0; b0 < j1; b0 += batchEntries) processBatch(list, b0, std::min(j1, b0 + batchEntries), quick, twiceD, missingIg2, error);
     };
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
         // the entries to test: all, or with the skin those not certainly beyond reach since their

@@ -7,7 +7,12 @@
 #include <core/ForceContainer.hpp>
 #include <core/LawDispatcher.hpp>
 #include <lib/base/ChunkQueue.hpp>
+#include <memory>
 #include <set>
+#include <string>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include <vector>
 
 namespace yade {
@@ -45,15 +50,21 @@ private:
     const Vector3r* shapePos = nullptr;
     const Real* shapeRadius = nullptr;
     bool quickFromMirror = false; // this step's centers are the integrator's positions (the radii cached)
+    bool cacheBuilt = false;      // prepareShapes() rebuilt shapeCache in this step
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
+    // Also each body's shape (null: none or a hole) and its class index (-1: none), read by
+    // the batched dispatch instead of the bodies.
     struct ShapeCache {
         std::vector<Real> radius;
         std::vector<Body::id_t> facetIds;
+        std::vector<const Shape*> shape;
+        std::vector<int> shapeIndex;
         long long changes = -1, writes = -1, scene = -1; // bodies.changes, externalWrites(), Scene::serial
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
+    void prepareShapes();      // refreshes shapeCache when bodies or anything from Python changed
     bool prepareQuickReject(); // sets shapePos and shapeRadius; false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair; gap is
     // then how far the pair is beyond the functor's reach (distance of the centres, or of the
@@ -113,6 +124,31 @@ private:
         std::vector<std::vector<EnergyTracker::Captured>> capturedEnergy;
     };
     std::vector<std::unique_ptr<ListWork>> work;
+    // Batched dispatch (processBatch): per thread, the entries of the batch being computed.
+    static constexpr size_t batchEntries = 256;
+    struct Scratch {
+        struct Entry {
+            long k;             // position in O.interactions
+            Interaction* I;
+            IGeomFunctor* geom; // its Ig2 functor (null once computed)
+            LawFunctor* law;    // its Law2 functor
+            char real;          // the Ig2 functor's answer
+        };
+        std::vector<Entry> entries;
+        std::vector<Interaction*> batch;
+        std::vector<size_t> where;
+        std::vector<char> flags;
+    };
+    std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
+    void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
+            std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error);
+    static int threadNumber() {
+#ifdef _OPENMP
+        return omp_get_thread_num();
+#else
+        return 0;
+#endif
+    }
     struct {
         std::vector<int> owner, partners, fixed;
     } assignScratch;

@@ -36,8 +36,8 @@ void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep&
     const State& s = *b.state;
     for (int i = 0; i < 6; ++i) {
         const Real K = i < 3 ? kt[i] : kr[i - 3];
-        const Real m = i < 3 ? s.mass : s.inertia[i - 3];
-        if (K <= 0 || (s.blockedDOFsMask & (1 << i))) continue;
+        const Real m = i < 3 ? s.mass() : s.inertia()[i - 3];
+        if (K <= 0 || (s.blockedDOFsMask() & (1 << i))) continue;
         const CriticalStep c{std::sqrt(2.0) * std::sqrt(m / K), b.id, i}; // (3.5.18)
         if (c.before(best)) best = c;
     }

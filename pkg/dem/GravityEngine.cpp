@@ -11,8 +11,8 @@ void GravityEngine::action() {
     for (long id = 0; id < n; ++id) {
         const auto& b = s.bodies[(Body::id_t)id];
         if (!b || !b->isDynamic() || (mask != 0 && !(b->mask & mask))) continue;
-        s.forces.addForce((int)id, gravity * b->state->mass);
-        if (gravId >= 0) s.energy.add(gravId, -b->state->mass * gravity.dot(b->state->vel) * s.dt); // move x_{n-1} -> x_n
+        s.forces.addForce((int)id, gravity * b->state->mass());
+        if (gravId >= 0) s.energy.add(gravId, -b->state->mass() * gravity.dot(b->state->vel()) * s.dt); // move x_{n-1} -> x_n
     }
 }
 

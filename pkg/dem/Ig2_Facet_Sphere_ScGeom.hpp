@@ -7,15 +7,15 @@
 
 namespace yade {
 
-class Ig2_Facet_Sphere_ScGeom : public IGeomFunctorOf<Facet, Sphere, ScGeom> {
+class Ig2_Facet_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Facet_Sphere_ScGeom, Facet, Sphere, ScGeom> {
 public:
     Real shrinkFactor = 0;
     template <class V> void visit(V& v) {
         IGeomFunctor::visit(v);
         v.attr("shrinkFactor", shrinkFactor, "Shrink the facet's edges inwards by this fraction of the sphere radius", Attr::nonNegative);
     }
-    bool go(const Facet& f, const Sphere& s, const State& st1, const State& st2, const Vector3r& shift2, bool force,
-            Interaction& I) override;
+    bool go(const Facet& f, const Sphere& s, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
+            Interaction& I);
     Real quickRejectFactor() const override { return 1; } // go() returns false when the plane is out of reach
 };
 

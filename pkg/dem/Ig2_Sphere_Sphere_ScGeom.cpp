@@ -3,7 +3,7 @@
 
 namespace yade {
 
-bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const State& st1, const State& st2,
+bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2,
         const Vector3r& shift2, bool force, Interaction& I) {
     Vector3r normal = (st2.pos + shift2) - st1.pos;
     const Real sumR = s1.radius + s2.radius;

@@ -6,7 +6,7 @@
 
 namespace yade {
 
-class Ig2_Sphere_Sphere_ScGeom : public IGeomFunctorOf<Sphere, Sphere, ScGeom> {
+class Ig2_Sphere_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Sphere_Sphere_ScGeom, Sphere, Sphere, ScGeom> {
 public:
     Real interactionDetectionFactor = 1;
     template <class V> void visit(V& v) {
@@ -14,8 +14,8 @@ public:
         v.attr("interactionDetectionFactor", interactionDetectionFactor,
                 "A contact starts when the distance is below this factor times r1+r2 (3.3.1)", Attr::positive);
     }
-    bool go(const Sphere& s1, const Sphere& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
-            Interaction& I) override;
+    bool go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
+            Interaction& I);
     Real quickRejectFactor() const override { return interactionDetectionFactor; }
 };
 

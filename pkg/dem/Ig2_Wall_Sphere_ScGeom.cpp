@@ -3,7 +3,7 @@
 
 namespace yade {
 
-bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const State& st1, const State& st2,
+bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
         const Vector3r& shift2, bool force, Interaction& I) {
     const int ax = w.axis;
     const Vector3r center = st2.pos + shift2;

@@ -7,14 +7,14 @@
 
 namespace yade {
 
-class Law2_ScGeom_FrictPhys_CundallStrack : public LawFunctorOf<ScGeom, FrictPhys> {
+class Law2_ScGeom_FrictPhys_CundallStrack : public LawFunctorBatched<Law2_ScGeom_FrictPhys_CundallStrack, ScGeom, FrictPhys> {
 public:
     bool neverErase = false;
     template <class V> void visit(V& v) {
         LawFunctor::visit(v);
         v.attr("neverErase", neverErase, "Keep contacts whose bodies separated (forces zeroed) instead of removing them");
     }
-    bool go(ScGeom& geom, FrictPhys& phys, Interaction& I) override;
+    bool go(ScGeom& geom, FrictPhys& phys, Interaction& I);
     void prepare() override; // energy terms
 
 private:

@@ -76,6 +76,7 @@ void NewtonIntegrator::action() {
     long diverged = -1; // a body whose new state is not finite (not written)
     const long long writesBefore = externalWrites();
     const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
+    BodyHot* hot = s.bodies.hot().data();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
     const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
@@ -110,14 +111,13 @@ void NewtonIntegrator::action() {
     // bodies lo .. hi-1, energy terms into e (each body's new state does not depend on the thread that computes it)
     auto integrate = [&](long lo, long hi, EnergySums& e) {
     for (long id = lo; id < hi; ++id) {
-        const Body* b = s.bodies[(Body::id_t)id].get();
-        if (!b) {
+        BodyHot& st = hot[id]; // (the body's State is a view of this record)
+        if (!st.exists) {
             mirror[id] = Vector3r::Constant(NaN);
             continue;
         }
-        State& st = *b->state;
         mirror[id] = st.pos; // replaced below by the new position
-        if (moveMask != -1 && !(b->mask & moveMask)) continue; // bodies outside the mask are not moved
+        if (moveMask != -1 && !(st.mask & moveMask)) continue; // bodies outside the mask are not moved
         const int blocked = st.blockedDOFsMask;
         const bool dynamic = blocked != State::DOF_ALL;
         Vector3r vel = st.vel, angVel = st.angVel;

@@ -18,7 +18,7 @@ Real Shop::PWaveTimeStep(const Scene& scene) {
         if (!s || !m) continue;
         // The density seen by the dynamics is the body's mass over its volume.
         const Real volume = 4.0 / 3.0 * Mathr_PI * std::pow(s->radius, 3);
-        const Real density = b->state->mass > 0 ? b->state->mass / volume : m->density;
+        const Real density = b->state->mass() > 0 ? b->state->mass() / volume : m->density;
         dt = std::min(dt, s->radius / std::sqrt(m->young / density));
     }
     if (!std::isfinite(dt)) throw std::runtime_error("PWaveTimeStep: no sphere with an elastic material (ElastMat) in the scene");
@@ -34,7 +34,7 @@ Real Shop::unbalancedForce(Scene& scene, bool useMaxForce) {
     long nBodies = 0;
     for (const auto& b : scene.bodies) {
         if (!b || !b->isDynamic()) continue;
-        const Real f = (scene.forces.getForce(b->id) + b->state->mass * gravity).norm();
+        const Real f = (scene.forces.getForce(b->id) + b->state->mass() * gravity).norm();
         maxF = std::max(maxF, f);
         sumF += f;
         ++nBodies;
@@ -57,9 +57,9 @@ Real Shop::kineticEnergy(const Scene& scene) {
     for (const auto& b : scene.bodies) {
         if (!b || !b->isDynamic()) continue;
         const State& s = *b->state;
-        const Matrix3r R = s.ori.toRotationMatrix();
-        const Matrix3r I = R * s.inertia.asDiagonal() * R.transpose(); // inertia in the global frame
-        e += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.angVel.dot(I * s.angVel);
+        const Matrix3r R = s.ori().toRotationMatrix();
+        const Matrix3r I = R * s.inertia().asDiagonal() * R.transpose(); // inertia in the global frame
+        e += 0.5 * s.mass() * s.vel().squaredNorm() + 0.5 * s.angVel().dot(I * s.angVel());
     }
     return e;
 }
@@ -71,8 +71,8 @@ std::pair<Vector3r, Vector3r> Shop::aabbExtremaOfSpheres(const Scene& scene, boo
         const Sphere* s = sphereOf(*b);
         if (!s) continue;
         const Vector3r r = Vector3r::Constant(centers ? 0 : s->radius);
-        lo = lo.cwiseMin(b->state->pos - r);
-        hi = hi.cwiseMax(b->state->pos + r);
+        lo = lo.cwiseMin(b->state->pos() - r);
+        hi = hi.cwiseMax(b->state->pos() + r);
     }
     return {lo, hi};
 }
@@ -90,7 +90,7 @@ std::vector<int> Shop::coordinations(const Scene& scene, const Vector3r& lo, con
     std::vector<int> counts;
     for (const auto& b : scene.bodies) {
         if (!b) continue;
-        const Vector3r& p = b->state->pos;
+        const Vector3r& p = b->state->pos();
         if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
         int n = 0;
         for (const auto& I : scene.interactions.withBody(b->id)) n += I->isReal();

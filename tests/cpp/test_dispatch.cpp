@@ -62,7 +62,7 @@ TEST(BoundDispatcher, ComputesSphereAabb) {
     auto s = std::make_shared<Sphere>();
     s->radius = 0.5;
     b.shape = s;
-    b.state->pos = Vector3r(1, 2, 3);
+    b.state->pos() = Vector3r(1, 2, 3);
     d.getFunctor(*s)->go(*s, b.bound, *b.state, b);
     ASSERT_TRUE(b.bound);
     EXPECT_EQ(b.bound->min, Vector3r(0.5, 1.5, 2.5));
