@@ -21,18 +21,19 @@ void IPhysFunctor::go(const std::shared_ptr<Material>&, const std::shared_ptr<Ma
 bool LawFunctor::go(IGeom&, IPhys&, Interaction&) { throw notImplemented(*this); }
 
 // The adapters from the batched forms to the one-contact ones (functors written in that form).
-void IGeomFunctor::goBatch(const BodyColumns&, Interaction* const* I, size_t n, char* result) {
+void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* result) {
     const BodyContainer& bodies = scene->bodies;
     for (size_t j = 0; j < n; ++j) {
-        Interaction& i = *I[j];
+        Interaction& i = *c[j].I;
         const Body& b1 = *bodies[i.id1];
         const Body& b2 = *bodies[i.id2];
         result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, Vector3r::Zero(), false, i);
+        c[j].geom = i.geom.get();
     }
 }
 
-void LawFunctor::goBatch(Interaction* const* I, size_t n, char* keep) {
-    for (size_t j = 0; j < n; ++j) keep[j] = go(*I[j]->geom, *I[j]->phys, *I[j]);
+void LawFunctor::goBatch(const Contact* c, size_t n, char* keep) {
+    for (size_t j = 0; j < n; ++j) keep[j] = go(*c[j].geom, *c[j].phys, *c[j].I);
 }
 
 void BoundDispatcher::action() {

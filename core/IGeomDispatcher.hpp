@@ -24,15 +24,16 @@ public:
     // two spheres farther apart than this factor × (r1 + r2), or a sphere whose center is farther
     // than this factor × r from a facet's plane, are not in contact (negative: no such promise).
     virtual Real quickRejectFactor() const { return -1; }
-    // The batched form: the geometry of the potential or real interactions I[0] .. I[n-1], all
+    // The batched form: the geometry of the potential or real interactions c[0] .. c[n-1], all
     // of one pair of shape types taken in this functor's order; result[j] is go()'s answer for
-    // I[j]. The default calls go() once per contact (an adapter for functors written in the
-    // one-contact form); the library's functors derive from IGeomFunctorBatched.
-    virtual void goBatch(const BodyColumns& bodies, Interaction* const* I, size_t n, char* result);
+    // c[j] (whose geom is set when the functor made one). The default calls go() once per
+    // contact (an adapter for functors written in the one-contact form); the library's functors
+    // derive from IGeomFunctorBatched.
+    virtual void goBatch(const BodyColumns& bodies, Contact* c, size_t n, char* result);
 };
 
 // A library Ig2 functor: Derived has a non-virtual
-//   bool go(const S1&, const S2&, const BodyHot&, const BodyHot&, const Vector3r& shift2, bool force, Interaction&)
+//   bool go(const S1&, const S2&, const BodyHot&, const BodyHot&, const Vector3r& shift2, bool force, Contact&)
 // that reads the bodies' records; goBatch() calls it in a loop with no virtual call per contact.
 template <class Derived, class S1, class S2, class G> class IGeomFunctorBatched : public IGeomFunctor {
 public:
@@ -40,14 +41,15 @@ public:
     std::string producedType() const override { return registeredName<G>(); }
     bool go(const Shape& s1, const Shape& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
             Interaction& I) final {
-        return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.hot(), st2.hot(), shift2, force, I);
+        Contact c(I);
+        return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.hot(), st2.hot(), shift2, force, c);
     }
-    void goBatch(const BodyColumns& b, Interaction* const* I, size_t n, char* result) final {
+    void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) final {
         Derived& d = self();
         for (size_t j = 0; j < n; ++j) {
-            Interaction& i = *I[j];
-            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[i.id1]), static_cast<const S2&>(*b.shape[i.id2]), b.hot[i.id1],
-                    b.hot[i.id2], Vector3r::Zero(), false, i);
+            Contact& x = c[j];
+            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[x.id1]), static_cast<const S2&>(*b.shape[x.id2]), b.hot[x.id1],
+                    b.hot[x.id2], Vector3r::Zero(), false, x);
         }
     }
 
@@ -55,6 +57,8 @@ private:
     Derived& self() { return static_cast<Derived&>(*this); }
 };
 
+// A functor in the one-contact form (a user's own C++ functor): the typed go() is called once
+// per contact through IGeomFunctor::goBatch, the adapter.
 template <class S1, class S2, class G> class IGeomFunctorOf : public IGeomFunctor {
 public:
     std::vector<std::string> argTypes() const override { return {registeredName<S1>(), registeredName<S2>()}; }

@@ -36,4 +36,24 @@ public:
     void swapOrder() { std::swap(id1, id2); cellDist = -cellDist; }
 };
 
+// One interaction as the batched functors see it (IGeomFunctorBatched, LawFunctorBatched): its
+// geometry and physics objects and the two ids, read from InteractionContainer's columns; the
+// Interaction itself is touched only to create or end the contact.
+struct Contact {
+    Interaction* I = nullptr;
+    IGeom* geom = nullptr;
+    IPhys* phys = nullptr;
+    Body::id_t id1 = -1, id2 = -1;
+    bool isReal() const { return geom && phys; }
+    explicit Contact(Interaction& i) : I(&i), geom(i.geom.get()), phys(i.phys.get()), id1(i.id1), id2(i.id2) {}
+    Contact(Interaction* i, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : I(i), geom(g), phys(p), id1(a), id2(b) {}
+    // A new geometry object of type G for this interaction (Ig2 functors, first contact).
+    template <class G> G& makeGeom() {
+        auto g = std::make_shared<G>();
+        I->geom = g;
+        geom = g.get();
+        return *g;
+    }
+};
+
 } // namespace yade

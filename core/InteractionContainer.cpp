@@ -26,6 +26,7 @@ bool InteractionContainer::insert(const Ptr& I) {
     pairIds.push_back(a);
     pairIds.push_back(b);
     wasReal.push_back(I->isReal());
+    objects.push_back(Objects{I->geom.get(), I->phys.get()});
     partners[a].emplace_back(b, I.get());
     partners[b].emplace_back(a, I.get());
     ++changes;
@@ -55,10 +56,12 @@ bool InteractionContainer::erase(id_t a, id_t b) {
         pairIds[2 * idx] = pairIds[2 * last];
         pairIds[2 * idx + 1] = pairIds[2 * last + 1];
         wasReal[idx] = wasReal[last];
+        objects[idx] = objects[last];
     }
     linIntrs.pop_back();
     pairIds.resize(2 * last);
     wasReal.pop_back();
+    objects.pop_back();
     ++changes;
     return true;
 }
@@ -67,8 +70,14 @@ void InteractionContainer::clear() {
     linIntrs.clear();
     pairIds.clear();
     wasReal.clear();
+    objects.clear();
     for (auto& p : partners) p.clear();
     ++changes;
+}
+
+void InteractionContainer::syncObjects() {
+    objects.resize(linIntrs.size());
+    for (size_t k = 0; k < linIntrs.size(); ++k) objects[k] = Objects{linIntrs[k]->geom.get(), linIntrs[k]->phys.get()};
 }
 
 size_t InteractionContainer::countReal() const {

@@ -37,6 +37,16 @@ public:
     // to date), so that distant potential pairs are skipped without touching the objects.
     std::vector<id_t> pairIds; // 2 per interaction
     std::vector<char> wasReal;
+    // The interaction's geometry and physics objects (null when absent), so that the batched
+    // functors reach them without reading the Interaction: kept up to date by the interaction
+    // loop, which calls syncObjects() after anything was set from Python.
+    struct Objects {
+        IGeom* geom = nullptr;
+        IPhys* phys = nullptr;
+    };
+    std::vector<Objects> objects;
+    void syncObjects(); // from every interaction's geom and phys
+    long long objectsWrites = -1; // externalWrites() at the last syncObjects()
     // Incremented by every insert, erase and clear (the order of linIntrs changed).
     long long changes = 0;
 

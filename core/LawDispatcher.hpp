@@ -11,28 +11,32 @@ public:
     template <class V> void visit(V& v) { Functor::visit(v); }
     // Applies forces on both bodies; returns false when the interaction must be removed.
     virtual bool go(IGeom& geom, IPhys& phys, Interaction& I);
-    // The batched form: forces of the real contacts I[0] .. I[n-1], all of this functor's
-    // (IGeom, IPhys) types, in this order; keep[j] is go()'s answer for I[j]. The default calls
+    // The batched form: forces of the real contacts c[0] .. c[n-1], all of this functor's
+    // (IGeom, IPhys) types, in this order; keep[j] is go()'s answer for c[j]. The default calls
     // go() once per contact (an adapter for the one-contact form); the library's functors
     // derive from LawFunctorBatched.
-    virtual void goBatch(Interaction* const* I, size_t n, char* keep);
+    virtual void goBatch(const Contact* c, size_t n, char* keep);
 };
 
-// A library Law2 functor: Derived has a non-virtual bool go(G&, P&, Interaction&), called in a
+// A library Law2 functor: Derived has a non-virtual bool go(G&, P&, const Contact&), called in a
 // loop by goBatch() with no virtual call per contact.
 template <class Derived, class G, class P> class LawFunctorBatched : public LawFunctor {
 public:
     std::vector<std::string> argTypes() const override { return {registeredName<G>(), registeredName<P>()}; }
-    bool go(IGeom& geom, IPhys& phys, Interaction& I) final { return self().Derived::go(static_cast<G&>(geom), static_cast<P&>(phys), I); }
-    void goBatch(Interaction* const* I, size_t n, char* keep) final {
+    bool go(IGeom& geom, IPhys& phys, Interaction& I) final {
+        return self().Derived::go(static_cast<G&>(geom), static_cast<P&>(phys), Contact(&I, &geom, &phys, I.id1, I.id2));
+    }
+    void goBatch(const Contact* c, size_t n, char* keep) final {
         Derived& d = self();
-        for (size_t j = 0; j < n; ++j) keep[j] = d.Derived::go(static_cast<G&>(*I[j]->geom), static_cast<P&>(*I[j]->phys), *I[j]);
+        for (size_t j = 0; j < n; ++j) keep[j] = d.Derived::go(static_cast<G&>(*c[j].geom), static_cast<P&>(*c[j].phys), c[j]);
     }
 
 private:
     Derived& self() { return static_cast<Derived&>(*this); }
 };
 
+// A functor in the one-contact form (a user's own C++ functor), called once per contact through
+// LawFunctor::goBatch, the adapter.
 template <class G, class P> class LawFunctorOf : public LawFunctor {
 public:
     std::vector<std::string> argTypes() const override { return {registeredName<G>(), registeredName<P>()}; }

@@ -212,6 +212,8 @@ static inline void prefetchObject(const void* p, int lines = 3) {
 // Entries j0 .. j1-1 of thread list `list` (at most batchEntries): quick rejects, then the Ig2
 // functors over batches of one shape-type pair, Ip2 for new contacts, and the Law2 functors over
 // runs of one (IGeom, IPhys) pair in list order (forces are added in the order of the list).
+// Existing contacts are reached through the container's columns (ids, geometry and physics
+// objects), never through their Interaction.
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     Scene& s = *scene;
@@ -221,37 +223,42 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const unsigned* todo = work[list]->todo;
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
+    Body::id_t* ids = intrs.pairIds.data();
+    InteractionContainer::Objects* objects = intrs.objects.data();
     Scratch& sc = *scratch[threadNumber()];
     sc.entries.clear();
+    sc.contacts.clear();
     // 1. the pairs to compute, and their Ig2 functor
     for (size_t j = j0; j < j1; ++j) {
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
         Real gap;
-        if (quick && !intrs.wasReal[k] && quickReject(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], gap)) {
+        if (quick && !intrs.wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
             if (gaps) gaps[i] = gap - twiceD;
             continue; // still apart
         }
         if (gaps) gaps[i] = -Inf; // tested again at the next step
-        Interaction& I = *intrs[(size_t)k];
-        const int c1 = shapeIndex[I.id1], c2 = shapeIndex[I.id2];
+        const int c1 = shapeIndex[ids[2 * k]], c2 = shapeIndex[ids[2 * k + 1]];
         if (c1 < 0 || c2 < 0) continue; // a body without shape
         const auto& geomEntry = geomDispatcher->getFunctor(c1, c2);
         if (!geomEntry.functor) {
 #pragma omp critical(yadeMissing)
-            missingIg2.emplace_back(shapes[I.id1], shapes[I.id2]);
+            missingIg2.emplace_back(shapes[ids[2 * k]], shapes[ids[2 * k + 1]]);
             continue;
         }
+        Interaction* I = intrs[(size_t)k].get();
         if (geomEntry.swap) { // the functor takes the shapes in the other order
-            I.swapOrder();
-            intrs.pairIds[2 * k] = I.id1;
-            intrs.pairIds[2 * k + 1] = I.id2;
+            I->swapOrder();
+            ids[2 * k] = I->id1;
+            ids[2 * k + 1] = I->id2;
         }
-        sc.entries.push_back(Scratch::Entry{k, &I, geomEntry.functor, nullptr, 0});
-        // the functors read the contact's objects after the whole batch is gathered: their loads
-        // are started now, all at once, instead of one contact after the other
-        prefetchObject(I.geom.get());
-        prefetchObject(I.phys.get());
+        const InteractionContainer::Objects& o = objects[k];
+        // the functors read the contact's objects once the whole batch is gathered: their loads
+        // start now, all at once, instead of one contact after the other
+        prefetchObject(o.geom);
+        prefetchObject(o.phys);
+        sc.entries.push_back(Scratch::Entry{k, geomEntry.functor, nullptr, 0});
+        sc.contacts.emplace_back(I, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
     }
     const size_t n = sc.entries.size();
     if (n == 0) return;
@@ -264,14 +271,16 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         sc.where.clear();
         for (size_t e = first; e < n; ++e)
             if (sc.entries[e].geom == f) {
-                sc.batch.push_back(sc.entries[e].I);
+                sc.batch.push_back(sc.contacts[e]);
                 sc.where.push_back(e);
             }
         sc.flags.resize(sc.batch.size());
         f->goBatch(columns, sc.batch.data(), sc.batch.size(), sc.flags.data());
         for (size_t m = 0; m < sc.where.size(); ++m) {
-            sc.entries[sc.where[m]].geom = nullptr;
-            sc.entries[sc.where[m]].real = sc.flags[m];
+            Scratch::Entry& x = sc.entries[sc.where[m]];
+            x.geom = nullptr;
+            x.real = sc.flags[m];
+            if (sc.batch[m].geom != sc.contacts[sc.where[m]].geom) objects[x.k].geom = sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // a new one
         }
     }
     // 3. in list order: contacts that ended, physics of new ones, and each one's Law2 functor
@@ -279,13 +288,14 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     size_t live = 0;
     for (size_t e = 0; e < n; ++e) {
         Scratch::Entry& x = sc.entries[e];
-        Interaction& I = *x.I;
+        Contact& c = sc.contacts[e];
         if (!x.real) {
-            if (I.isReal()) I.reset(); // the geometry says the contact is over
+            if (c.isReal()) endContact(intrs, x.k); // the geometry says the contact is over
             setWasReal(intrs, x.k, false);
             continue;
         }
-        if (!I.phys) {
+        if (!c.phys) {
+            Interaction& I = *c.I;
             const Body& b1 = *bodies[I.id1];
             const Body& b2 = *bodies[I.id2];
             if (!b1.material || !b2.material) continue;
@@ -297,6 +307,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 continue;
             }
             physEntry.functor->go(b1.material, b2.material, I);
+            objects[x.k].phys = c.phys = I.phys.get();
             I.iterMadeReal = s.iter;
 #pragma omp critical(yadeNewContact)
             {
@@ -304,30 +315,37 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 s.newContactBodies.push_back(I.id2);
             }
         }
-        const auto& lawEntry = lawDispatcher->getFunctor(*I.geom, *I.phys);
+        const auto& lawEntry = lawDispatcher->getFunctor(*c.geom, *c.phys);
         if (!lawEntry.functor) {
 #pragma omp critical(yadeError)
-            error = "no Law2 functor for " + I.geom->getClassName() + "+" + I.phys->getClassName();
+            error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
             continue;
         }
         x.law = lawEntry.functor;
-        sc.entries[live++] = x;
+        sc.entries[live] = x;
+        sc.contacts[live] = c;
+        ++live;
     }
     // 4. forces: runs of one Law2 functor, in list order
     for (size_t first = 0; first < live;) {
         LawFunctor* f = sc.entries[first].law;
         size_t last = first;
-        sc.batch.clear();
-        while (last < live && sc.entries[last].law == f) sc.batch.push_back(sc.entries[last++].I);
-        sc.flags.resize(sc.batch.size());
-        f->goBatch(sc.batch.data(), sc.batch.size(), sc.flags.data());
+        while (last < live && sc.entries[last].law == f) ++last;
+        sc.flags.resize(last - first);
+        f->goBatch(sc.contacts.data() + first, last - first, sc.flags.data());
         for (size_t e = first; e < last; ++e) {
-            Interaction& I = *sc.entries[e].I;
-            if (!sc.flags[e - first]) I.reset(); // back to a potential interaction
-            setWasReal(intrs, sc.entries[e].k, I.isReal());
+            const bool keep = sc.flags[e - first];
+            if (!keep) endContact(intrs, sc.entries[e].k); // back to a potential interaction
+            setWasReal(intrs, sc.entries[e].k, keep);
         }
         first = last;
     }
+}
+
+// Back to a potential interaction, in the object and the columns.
+void InteractionLoop::endContact(InteractionContainer& intrs, long k) {
+    intrs[(size_t)k]->reset();
+    intrs.objects[k] = InteractionContainer::Objects();
 }
 
 void InteractionLoop::action() {
@@ -348,6 +366,10 @@ void InteractionLoop::action() {
 #endif
     cacheBuilt = false;
     prepareShapes();
+    if (intrs.objectsWrites != externalWrites() || intrs.objects.size() != intrs.size()) { // (Python may have set geom or phys)
+        intrs.objectsWrites = externalWrites();
+        intrs.syncObjects();
+    }
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();
@@ -396,8 +418,24 @@ void InteractionLoop::action() {
     }
     const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
     // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin)
+    // Entries j0 .. j1-1 of a list, batch by batch. Each contact's objects are far apart in
+    // memory: the interactions of the next batch are loaded while this one is computed (and their
+    // geometry and physics once gathered, in processBatch), so that the waits overlap.
     auto process = [&](int list, size_t j0, size_t j1) {
-        for (size_t b0 = j0; b0 < j1; b0 += batchEntries) processBatch(list, b0, std::min(j1, b0 + batchEntries), quick, twiceD, missingIg2, error);
+        const std::vector<long>& pairs = threadPairs[list];
+        const unsigned* todo = work[list]->todo;
+        auto prefetchInteractions = [&](size_t a, size_t b) {
+            for (size_t j = a; j < b; ++j) {
+                const long k = pairs[todo ? todo[j] : j];
+                if (!quick || intrs.wasReal[k]) prefetchObject(intrs[(size_t)k].get(), 2); // (distant potential pairs are rejected without it)
+            }
+        };
+        prefetchInteractions(j0, std::min(j1, j0 + batchEntries));
+        for (size_t b0 = j0; b0 < j1; b0 += batchEntries) {
+            const size_t b1 = std::min(j1, b0 + batchEntries);
+            prefetchInteractions(b1, std::min(j1, b1 + batchEntries));
+            processBatch(list, b0, b1, quick, twiceD, missingIg2, error);
+        }
     };
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
         // the entries to test: all, or with the skin those not certainly beyond reach since their

@@ -129,19 +129,20 @@ private:
     struct Scratch {
         struct Entry {
             long k;             // position in O.interactions
-            Interaction* I;
             IGeomFunctor* geom; // its Ig2 functor (null once computed)
             LawFunctor* law;    // its Law2 functor
             char real;          // the Ig2 functor's answer
         };
         std::vector<Entry> entries;
-        std::vector<Interaction*> batch;
+        std::vector<Contact> contacts; // (entry e: contacts[e])
+        std::vector<Contact> batch;
         std::vector<size_t> where;
         std::vector<char> flags;
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
             std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error);
+    static void endContact(InteractionContainer& intrs, long k);
     static int threadNumber() {
 #ifdef _OPENMP
         return omp_get_thread_num();

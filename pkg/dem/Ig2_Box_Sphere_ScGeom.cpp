@@ -4,7 +4,7 @@
 namespace yade {
 
 bool Ig2_Box_Sphere_ScGeom::go(const Box& b, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
-        const Vector3r& shift2, bool force, Interaction& I) {
+        const Vector3r& shift2, bool force, Contact& contact) {
     const Real r = s.radius;
     const Vector3r center = st2.pos + shift2;
     const Vector3r local = st1.ori.conjugate() * (center - st1.pos); // sphere center in the box frame
@@ -28,12 +28,11 @@ bool Ig2_Box_Sphere_ScGeom::go(const Box& b, const Sphere& s, const BodyHot& st1
     } else {
         normal = center - (st1.pos + st1.ori * closest);
         penetrationDepth = r - normal.norm();
-        if (penetrationDepth <= 0 && !I.isReal() && !force) return false;
+        if (penetrationDepth <= 0 && !contact.isReal() && !force) return false;
         normal.normalize();
     }
-    const bool isNew = !I.geom;
-    if (isNew) I.geom = std::make_shared<ScGeom>();
-    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    const bool isNew = !contact.geom;
+    ScGeom& g = isNew ? contact.makeGeom<ScGeom>() : static_cast<ScGeom&>(*contact.geom);
     g.contactPoint = center - (r - 0.5 * penetrationDepth) * normal;
     g.penetrationDepth = penetrationDepth;
     g.refR1 = g.refR2 = r;

@@ -11,7 +11,7 @@ class Ig2_Box_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Box_Sphere_ScGeom, 
 public:
     template <class V> void visit(V& v) { IGeomFunctor::visit(v); }
     bool go(const Box& b, const Sphere& s, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
-            Interaction& I);
+            Contact& contact);
 };
 
 } // namespace yade

@@ -4,7 +4,7 @@
 namespace yade {
 
 bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
-        const Vector3r& shift2, bool force, Interaction& I) {
+        const Vector3r& shift2, bool force, Contact& contact) {
     const Matrix3r toGlobal = st1.ori.toRotationMatrix();
     const Vector3r c = toGlobal.transpose() * (st2.pos + shift2 - st1.pos); // sphere center, facet frame
     const Real r = s.radius;
@@ -14,7 +14,7 @@ bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const BodyHot&
         normal = -normal;
         L = -L;
     }
-    if (L > r && !I.isReal() && !force) return false;
+    if (L > r && !contact.isReal() && !force) return false;
     Vector3r cp = c - L * normal; // projection of the center on the plane
     // The edge whose outward normal points most towards cp decides face / edge / vertex contact.
     int m = 0;
@@ -40,10 +40,9 @@ bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const BodyHot&
         penetrationDepth = r - normal.norm();
         normal.normalize();
     }
-    if (penetrationDepth <= 0 && !I.isReal()) return false;
-    const bool isNew = !I.geom;
-    if (isNew) I.geom = std::make_shared<ScGeom>();
-    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    if (penetrationDepth <= 0 && !contact.isReal()) return false;
+    const bool isNew = !contact.geom;
+    ScGeom& g = isNew ? contact.makeGeom<ScGeom>() : static_cast<ScGeom&>(*contact.geom);
     normal = toGlobal * normal;
     g.contactPoint = st2.pos + shift2 - (r - 0.5 * penetrationDepth) * normal;
     g.penetrationDepth = penetrationDepth;

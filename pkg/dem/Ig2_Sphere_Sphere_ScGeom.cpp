@@ -4,16 +4,15 @@
 namespace yade {
 
 bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2,
-        const Vector3r& shift2, bool force, Interaction& I) {
+        const Vector3r& shift2, bool force, Contact& contact) {
     Vector3r normal = (st2.pos + shift2) - st1.pos;
     const Real sumR = s1.radius + s2.radius;
-    if (!I.isReal() && !force) { // a potential contact: is it one yet?
+    if (!contact.isReal() && !force) { // a potential contact: is it one yet?
         const Real reach = interactionDetectionFactor * sumR;
         if (normal.squaredNorm() > reach * reach) return false;
     }
-    const bool isNew = !I.geom;
-    if (isNew) I.geom = std::make_shared<ScGeom>();
-    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    const bool isNew = !contact.geom;
+    ScGeom& g = isNew ? contact.makeGeom<ScGeom>() : static_cast<ScGeom&>(*contact.geom);
     const Real dist = normal.norm();
     normal /= dist;
     g.penetrationDepth = sumR - dist;

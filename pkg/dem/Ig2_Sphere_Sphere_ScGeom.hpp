@@ -15,7 +15,7 @@ public:
                 "A contact starts when the distance is below this factor times r1+r2 (3.3.1)", Attr::positive);
     }
     bool go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
-            Interaction& I);
+            Contact& contact);
     Real quickRejectFactor() const override { return interactionDetectionFactor; }
 };
 

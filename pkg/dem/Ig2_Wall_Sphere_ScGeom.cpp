@@ -4,16 +4,15 @@
 namespace yade {
 
 bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
-        const Vector3r& shift2, bool force, Interaction& I) {
+        const Vector3r& shift2, bool force, Contact& contact) {
     const int ax = w.axis;
     const Vector3r center = st2.pos + shift2;
     const Real dist = center[ax] - st1.pos[ax]; // signed distance from the plane
-    if (!I.isReal() && std::abs(dist) > s.radius && !force) return false;
+    if (!contact.isReal() && std::abs(dist) > s.radius && !force) return false;
     Vector3r normal = Vector3r::Zero();
     normal[ax] = w.sense == 0 ? (dist > 0 ? 1 : -1) : w.sense;
-    const bool isNew = !I.geom;
-    if (isNew) I.geom = std::make_shared<ScGeom>();
-    ScGeom& g = static_cast<ScGeom&>(*I.geom);
+    const bool isNew = !contact.geom;
+    ScGeom& g = isNew ? contact.makeGeom<ScGeom>() : static_cast<ScGeom&>(*contact.geom);
     g.contactPoint = center;
     g.contactPoint[ax] = st1.pos[ax]; // the center projected on the wall
     g.penetrationDepth = s.radius - std::abs(dist);

@@ -9,7 +9,7 @@ void Law2_ScGeom_FrictPhys_CundallStrack::prepare() {
     plastId = scene->energy.term("plastDissip", true);
 }
 
-bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Interaction& I) {
+bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, const Contact& c) {
     if (geom.penetrationDepth < 0) { // the bodies separated
         if (!neverErase) return false;
         phys.normalForce = phys.shearForce = Vector3r::Zero();
@@ -31,7 +31,7 @@ bool Law2_ScGeom_FrictPhys_CundallStrack::go(ScGeom& geom, FrictPhys& phys, Inte
         scene->energy.add(elastId, 0.5 * (phys.normalForce.squaredNorm() / phys.kn + (phys.ks > 0 ? shearForce.squaredNorm() / phys.ks : 0)));
     const Vector3r force = -phys.normalForce - shearForce; // on body 1
     const Vector3r arm = geom.normal.cross(force);
-    scene->forces.addContact(I.id1, I.id2, force, (geom.refR1 - 0.5 * geom.penetrationDepth) * arm,
+    scene->forces.addContact(c.id1, c.id2, force, (geom.refR1 - 0.5 * geom.penetrationDepth) * arm,
             (geom.refR2 - 0.5 * geom.penetrationDepth) * arm);
     return true;
 }

@@ -14,7 +14,7 @@ public:
         LawFunctor::visit(v);
         v.attr("neverErase", neverErase, "Keep contacts whose bodies separated (forces zeroed) instead of removing them");
     }
-    bool go(ScGeom& geom, FrictPhys& phys, Interaction& I);
+    bool go(ScGeom& geom, FrictPhys& phys, const Contact& c);
     void prepare() override; // energy terms
 
 private:
