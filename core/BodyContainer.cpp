@@ -45,7 +45,7 @@ void BodyContainer::erase(id_t id) {
 void BodyContainer::clear() {
     unbindAll();
     bodies.clear();
-    store->records.resize(0);
+    store->resize(0);
     ++changes;
 }
 
@@ -57,8 +57,8 @@ void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long ch
     }
     unbindAll();
     bodies = std::move(all);
-    store->records.resize(0);
-    store->records.resize(bodies.size());
+    store->resize(0);
+    store->resize(bodies.size());
     for (const auto& b : bodies)
         if (b) attach(*b);
     changes = changeCount;

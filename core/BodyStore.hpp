@@ -1,8 +1,9 @@
-// The bodies' hot state, one packed record per body id, contiguous: what the integrator, the
-// collider and the interaction loop read and write every step. A State in a scene is a view of
-// its body's record (State::hot()); a State not (or no longer) in a scene keeps its own copy.
-// The records never move (StableArray), so Python views of `b.state.pos` and NumPy arrays over
-// the columns stay valid while the store lives; bound States share its ownership.
+// The bodies' hot state in columns indexed by body id (structure of arrays): what the integrator,
+// the collider and the interaction loop read and write every step. A State in a scene is a view
+// of its body's entries (State::pos() and its attributes read and write the columns); a State not
+// (or no longer) in a scene keeps its own copy, a BodyHot. The columns never move (StableArray),
+// so Python views of `b.state.pos` and NumPy arrays over them stay valid while the store lives;
+// bound States share its ownership.
 #pragma once
 #include <lib/base/Math.hpp>
 #include <lib/base/StableArray.hpp>
@@ -10,6 +11,7 @@
 
 namespace yade {
 
+// One body's hot state as one record: a State's own copy while not in a scene.
 struct BodyHot {
     Vector3r pos = Vector3r::Zero();
     Vector3r vel = Vector3r::Zero();
@@ -23,17 +25,31 @@ struct BodyHot {
     bool exists = false;     // a body of the scene has this id (false: a hole left by erase)
 };
 
+// What the contact functors read of one body: references into the columns (or into a State).
+struct Kinematics {
+    const Vector3r& pos;
+    const Vector3r& vel;
+    const Vector3r& angVel;
+    const Quaternionr& ori;
+};
+
 class BodyStore {
 public:
     // Address space for this many bodies is reserved (only the used part is memory).
     static constexpr size_t maxBodies = size_t(1) << 25;
-    BodyStore() : records(maxBodies) {}
-    StableArray<BodyHot> records; // [body id]
-    size_t size() const { return records.size(); }
-    BodyHot& operator[](size_t id) { return records[id]; }
-    const BodyHot& operator[](size_t id) const { return records[id]; }
-    BodyHot* data() { return records.data(); }
-    const BodyHot* data() const { return records.data(); }
+    StableArray<Vector3r> pos{maxBodies}, vel{maxBodies}, angVel{maxBodies}, inertia{maxBodies};
+    StableArray<Quaternionr> ori{maxBodies};
+    StableArray<Real> mass{maxBodies};
+    StableArray<int> blockedDOFsMask{maxBodies}, mask{maxBodies};
+    StableArray<bool> isDamped{maxBodies}, exists{maxBodies};
+
+    size_t size() const { return pos.size(); }
+    void resize(size_t n); // new entries: holes
+    BodyHot get(size_t id) const;
+    void set(size_t id, const BodyHot& r);
+    Kinematics kinematics(size_t id) const { return Kinematics{pos[id], vel[id], angVel[id], ori[id]}; }
+    // The entry of body id for a BodyHot member at `offset` in the record (a State's attribute).
+    void* fieldAddress(std::ptrdiff_t offset, size_t id);
 };
 
 } // namespace yade

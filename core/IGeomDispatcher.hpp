@@ -6,11 +6,12 @@
 
 namespace yade {
 
-// What a batch of contacts reads about the bodies, indexed by id: their records (the store's)
-// and their shapes (null for holes).
+// What a batch of contacts reads about the bodies, indexed by id: the store's columns, their
+// shapes (null: none, or a hole) and the radii of spheres (NaN for other shapes).
 struct BodyColumns {
-    const BodyHot* hot = nullptr;
+    const BodyStore* store = nullptr;
     const Shape* const* shape = nullptr;
+    const Real* radius = nullptr;
 };
 
 class IGeomFunctor : public Functor {
@@ -33,8 +34,9 @@ public:
 };
 
 // A library Ig2 functor: Derived has a non-virtual
-//   bool go(const S1&, const S2&, const BodyHot&, const BodyHot&, const Vector3r& shift2, bool force, Contact&)
-// that reads the bodies' records; goBatch() calls it in a loop with no virtual call per contact.
+//   bool go(const S1&, const S2&, const Kinematics&, const Kinematics&, const Vector3r& shift2, bool force, Contact&)
+// that reads the bodies' columns; goBatch() calls it in a loop with no virtual call per contact
+// (Derived may replace goBatch, e.g. to read radii from BodyColumns instead of the shapes).
 template <class Derived, class S1, class S2, class G> class IGeomFunctorBatched : public IGeomFunctor {
 public:
     std::vector<std::string> argTypes() const override { return {registeredName<S1>(), registeredName<S2>()}; }
@@ -42,14 +44,14 @@ public:
     bool go(const Shape& s1, const Shape& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
             Interaction& I) final {
         Contact c(I);
-        return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.hot(), st2.hot(), shift2, force, c);
+        return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.kinematics(), st2.kinematics(), shift2, force, c);
     }
-    void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) final {
+    void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) override {
         Derived& d = self();
         for (size_t j = 0; j < n; ++j) {
             Contact& x = c[j];
-            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[x.id1]), static_cast<const S2&>(*b.shape[x.id2]), b.hot[x.id1],
-                    b.hot[x.id2], Vector3r::Zero(), false, x);
+            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[x.id1]), static_cast<const S2&>(*b.shape[x.id2]),
+                    b.store->kinematics(x.id1), b.store->kinematics(x.id2), Vector3r::Zero(), false, x);
         }
     }
 

@@ -30,21 +30,20 @@ void State::setBlockedDOFs(const std::string& dofs) {
 
 void State::bind(const std::shared_ptr<BodyStore>& s, long id, int bodyMask) {
     if (slot >= 0) unbind();
-    if ((size_t)id >= s->size()) s->records.resize((size_t)id + 1);
-    BodyHot& r = (*s)[(size_t)id];
-    r = local;
+    if ((size_t)id >= s->size()) s->resize((size_t)id + 1);
+    BodyHot r = local;
     r.mask = bodyMask;
     r.exists = true;
+    s->set((size_t)id, r);
     store = s;
     slot = id;
 }
 
 void State::unbind() {
     if (slot < 0) return;
-    BodyHot& r = (*store)[(size_t)slot];
-    local = r;
+    local = store->get((size_t)slot);
     local.exists = false;
-    r.exists = false;
+    store->exists[(size_t)slot] = false;
     slot = -1;
 }
 

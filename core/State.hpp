@@ -16,25 +16,26 @@ public:
     State(const State& o) : Serializable(o), local(o.hot()), angMom(o.angMom), refPos(o.refPos), refOri(o.refOri), densityScaling(o.densityScaling) {}
     State& operator=(const State&) = delete;
 
-    // The record: the store's while bound to a body of a scene, else this object's own.
-    BodyHot& hot() { return slot >= 0 ? (*store)[(size_t)slot] : local; }
-    const BodyHot& hot() const { return slot >= 0 ? (*store)[(size_t)slot] : local; }
-    Vector3r& pos() { return hot().pos; }
-    const Vector3r& pos() const { return hot().pos; }
-    Vector3r& vel() { return hot().vel; }
-    const Vector3r& vel() const { return hot().vel; }
-    Vector3r& angVel() { return hot().angVel; }
-    const Vector3r& angVel() const { return hot().angVel; }
-    Quaternionr& ori() { return hot().ori; }
-    const Quaternionr& ori() const { return hot().ori; }
-    Real& mass() { return hot().mass; }
-    Real mass() const { return hot().mass; }
-    Vector3r& inertia() { return hot().inertia; }
-    const Vector3r& inertia() const { return hot().inertia; }
-    int& blockedDOFsMask() { return hot().blockedDOFsMask; }
-    int blockedDOFsMask() const { return hot().blockedDOFsMask; }
-    bool& isDamped() { return hot().isDamped; }
-    bool isDamped() const { return hot().isDamped; }
+    // Each accessor reads the store's column while bound to a body of a scene, else this object's copy.
+#define YADE_STATE_FIELD(T, name) \
+    T& name() { return slot >= 0 ? store->name[(size_t)slot] : local.name; } \
+    const T& name() const { return slot >= 0 ? store->name[(size_t)slot] : local.name; }
+    YADE_STATE_FIELD(Vector3r, pos)
+    YADE_STATE_FIELD(Vector3r, vel)
+    YADE_STATE_FIELD(Vector3r, angVel)
+    YADE_STATE_FIELD(Quaternionr, ori)
+    YADE_STATE_FIELD(Real, mass)
+    YADE_STATE_FIELD(Vector3r, inertia)
+    YADE_STATE_FIELD(int, blockedDOFsMask)
+    YADE_STATE_FIELD(bool, isDamped)
+#undef YADE_STATE_FIELD
+    // The whole record (a copy), and what the contact functors read.
+    BodyHot hot() const { return slot >= 0 ? store->get((size_t)slot) : local; }
+    Kinematics kinematics() const { return Kinematics{pos(), vel(), angVel(), ori()}; }
+    // For AttrCollector: attributes declared on members of `local` are read and written here.
+    void* hotAddress(std::ptrdiff_t offset) {
+        return slot >= 0 ? store->fieldAddress(offset, (size_t)slot) : reinterpret_cast<char*>(&local) + offset;
+    }
 
     // Moves the values into record `id` of `s` (BodyContainer, when the body enters the scene),
     // or back into this object (when it leaves). The store stays owned after unbind(): Python
@@ -65,8 +66,7 @@ public:
         v.attr("isDamped", local.isDamped, "Whether NewtonIntegrator damping applies to this body");
         v.attr("densityScaling", densityScaling, "Density scaling factor (1: none)", Attr::positive);
     }
-    // For AttrCollector: attributes declared on members of `local` are read and written in hot().
-    static constexpr bool hasHotRecord = true;
+    static constexpr bool hasHotRecord = true; // (AttrCollector: see hotAddress)
     Vector3r displ() const { return pos() - refPos; }
     // Rotation from refOri to ori, as axis times angle.
     Vector3r rot() const;

@@ -66,7 +66,8 @@ private:
     ClassInfo& insert(const char* name, const char* baseName, const std::type_info& t);
 };
 
-// Classes whose hot attributes live in a record elsewhere while bound: T::hasHotRecord, T::local, T::hot().
+// Classes whose hot attributes live elsewhere while bound: T::hasHotRecord, the members of T::local,
+// and T::hotAddress(offset of the member in local) giving where the value is now.
 template <class T, class = void> struct HasHotRecord : std::false_type {};
 template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>> : std::bool_constant<T::hasHotRecord> {};
 
@@ -87,7 +88,7 @@ template <class T> struct AttrCollector {
             const char* m = reinterpret_cast<const char*>(&member);
             if (m >= lo && m < lo + sizeof(proto.local)) {
                 const std::ptrdiff_t inRecord = m - lo;
-                a.address = [inRecord](Serializable& s) -> void* { return reinterpret_cast<char*>(&static_cast<T&>(s).hot()) + inRecord; };
+                a.address = [inRecord](Serializable& s) -> void* { return static_cast<T&>(s).hotAddress(inRecord); };
             }
         }
         if constexpr (AttrKindOf<M>::kind == AttrKind::Ptr) {

@@ -66,7 +66,8 @@ void InteractionLoop::prepareShapes() {
         const int c = b->shape->getClassIndex();
         cache.shape[id] = b->shape.get();
         cache.shapeIndex[id] = c;
-        if (c == sphereIndex) cache.radius[id] = static_cast<const Sphere&>(*b->shape).radius;
+        if (const Sphere* sphere = c == sphereIndex ? static_cast<const Sphere*>(b->shape.get()) : dynamic_cast<const Sphere*>(b->shape.get()))
+            cache.radius[id] = sphere->radius;
         else if (c == facetIndex) { // few facets: in id order
             cache.radius[id] = -1 - (Real)cache.facetIds.size();
             cache.facetIds.push_back((Body::id_t)id);
@@ -90,8 +91,8 @@ bool InteractionLoop::prepareQuickReject() {
         shapePos = scene->positionMirror.pos.data();
     } else { // from the bodies' records
         quickPos.resize(n);
-        const BodyHot* hot = bodies.hot().data();
-        for (long id = 0; id < n; ++id) quickPos[id] = hot[id].exists ? hot[id].pos : Vector3r::Constant(NaN);
+        const BodyStore& hot = bodies.hot();
+        for (long id = 0; id < n; ++id) quickPos[id] = hot.exists[id] ? hot.pos[id] : Vector3r::Constant(NaN);
         shapePos = quickPos.data();
     }
     shapeRadius = shapeCache.radius.data();
@@ -263,7 +264,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const size_t n = sc.entries.size();
     if (n == 0) return;
     // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
-    const BodyColumns columns{s.bodies.hot().data(), shapes};
+    const BodyColumns columns{&s.bodies.hot(), shapes, shapeCache.radius.data()};
     for (size_t first = 0; first < n; ++first) {
         IGeomFunctor* f = sc.entries[first].geom;
         if (!f) continue; // done

@@ -3,7 +3,7 @@
 
 namespace yade {
 
-bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
+bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const Kinematics& st1, const Kinematics& st2,
         const Vector3r& shift2, bool force, Contact& contact) {
     const Matrix3r toGlobal = st1.ori.toRotationMatrix();
     const Vector3r c = toGlobal.transpose() * (st2.pos + shift2 - st1.pos); // sphere center, facet frame

@@ -14,7 +14,7 @@ public:
         IGeomFunctor::visit(v);
         v.attr("shrinkFactor", shrinkFactor, "Shrink the facet's edges inwards by this fraction of the sphere radius", Attr::nonNegative);
     }
-    bool go(const Facet& f, const Sphere& s, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
+    bool go(const Facet& f, const Sphere& s, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
             Contact& contact);
     Real quickRejectFactor() const override { return 1; } // go() returns false when the plane is out of reach
 };

@@ -3,10 +3,22 @@
 
 namespace yade {
 
-bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2,
+bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const Kinematics& st1, const Kinematics& st2,
         const Vector3r& shift2, bool force, Contact& contact) {
+    return go(s1.radius, s2.radius, st1, st2, shift2, force, contact);
+}
+
+void Ig2_Sphere_Sphere_ScGeom::goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) {
+    for (size_t j = 0; j < n; ++j) {
+        Contact& x = c[j];
+        result[j] = go(b.radius[x.id1], b.radius[x.id2], b.store->kinematics(x.id1), b.store->kinematics(x.id2), Vector3r::Zero(), false, x);
+    }
+}
+
+bool Ig2_Sphere_Sphere_ScGeom::go(Real r1, Real r2, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
+        Contact& contact) {
     Vector3r normal = (st2.pos + shift2) - st1.pos;
-    const Real sumR = s1.radius + s2.radius;
+    const Real sumR = r1 + r2;
     if (!contact.isReal() && !force) { // a potential contact: is it one yet?
         const Real reach = interactionDetectionFactor * sumR;
         if (normal.squaredNorm() > reach * reach) return false;
@@ -16,9 +28,9 @@ bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const Body
     const Real dist = normal.norm();
     normal /= dist;
     g.penetrationDepth = sumR - dist;
-    g.contactPoint = st1.pos + (s1.radius - 0.5 * g.penetrationDepth) * normal;
-    g.refR1 = s1.radius;
-    g.refR2 = s2.radius;
+    g.contactPoint = st1.pos + (r1 - 0.5 * g.penetrationDepth) * normal;
+    g.refR1 = r1;
+    g.refR2 = r2;
     g.precompute(st1, st2, scene->dt, normal, isNew, shift2, true);
     return true;
 }

@@ -14,8 +14,11 @@ public:
         v.attr("interactionDetectionFactor", interactionDetectionFactor,
                 "A contact starts when the distance is below this factor times r1+r2 (3.3.1)", Attr::positive);
     }
-    bool go(const Sphere& s1, const Sphere& s2, const BodyHot& st1, const BodyHot& st2, const Vector3r& shift2, bool force,
+    bool go(const Sphere& s1, const Sphere& s2, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
             Contact& contact);
+    // The batch reads the radii from BodyColumns (contiguous) instead of the shapes.
+    void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) override;
+    bool go(Real r1, Real r2, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force, Contact& contact);
     Real quickRejectFactor() const override { return interactionDetectionFactor; }
 };
 

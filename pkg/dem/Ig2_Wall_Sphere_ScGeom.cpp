@@ -3,7 +3,7 @@
 
 namespace yade {
 
-bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const BodyHot& st1, const BodyHot& st2,
+bool Ig2_Wall_Sphere_ScGeom::go(const Wall& w, const Sphere& s, const Kinematics& st1, const Kinematics& st2,
         const Vector3r& shift2, bool force, Contact& contact) {
     const int ax = w.axis;
     const Vector3r center = st2.pos + shift2;

@@ -76,7 +76,7 @@ void NewtonIntegrator::action() {
     long diverged = -1; // a body whose new state is not finite (not written)
     const long long writesBefore = externalWrites();
     const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
-    BodyHot* hot = s.bodies.hot().data();
+    BodyStore& hot = s.bodies.hot();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
     const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
@@ -111,40 +111,42 @@ void NewtonIntegrator::action() {
     // bodies lo .. hi-1, energy terms into e (each body's new state does not depend on the thread that computes it)
     auto integrate = [&](long lo, long hi, EnergySums& e) {
     for (long id = lo; id < hi; ++id) {
-        BodyHot& st = hot[id]; // (the body's State is a view of this record)
-        if (!st.exists) {
+        if (!hot.exists[id]) { // (the State of a body is a view of its entries in these columns)
             mirror[id] = Vector3r::Constant(NaN);
             continue;
         }
-        mirror[id] = st.pos; // replaced below by the new position
-        if (moveMask != -1 && !(st.mask & moveMask)) continue; // bodies outside the mask are not moved
-        const int blocked = st.blockedDOFsMask;
+        Vector3r& statePos = hot.pos[id];
+        mirror[id] = statePos; // replaced below by the new position
+        if (moveMask != -1 && !(hot.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
+        const int blocked = hot.blockedDOFsMask[id];
+        const Real mass = hot.mass[id];
+        const Vector3r& inertia = hot.inertia[id];
         const bool dynamic = blocked != State::DOF_ALL;
-        Vector3r vel = st.vel, angVel = st.angVel;
+        Vector3r vel = hot.vel[id], angVel = hot.angVel[id];
         Real eGrav = 0, eKin = 0, eDamp = 0; // energy terms, added once the new state is known finite
         if (dynamic) {
-            const bool damped = lambda != 0 && st.isDamped;
-            Vector3r accel = accelOf(forces[id], Vector3r::Constant(st.mass), blocked, 0);
+            const bool damped = lambda != 0 && hot.isDamped[id];
+            Vector3r accel = accelOf(forces[id], Vector3r::Constant(mass), blocked, 0);
             const Vector3r gFree = freeGravity(g, blocked);
             if (gravityDamped) accel += gFree;
             const Vector3r undamped = accel;
             if (damped) damp(accel, vel, dt, lambda);
             if (!gravityDamped) accel += gFree;
             // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
-            const bool still = (angVel.array() == 0).all() && (torques[id].array() == 0).all() && (st.inertia.array() > 0).all();
-            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(torques[id], st.inertia, blocked, 3);
+            const bool still = (angVel.array() == 0).all() && (torques[id].array() == 0).all() && (inertia.array() > 0).all();
+            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(torques[id], inertia, blocked, 3);
             const Vector3r angUndamped = angAccel;
             if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
                 const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
-                eGrav = -st.mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
-                eKin = 0.5 * st.mass * v.squaredNorm() + 0.5 * w.dot(st.inertia.cwiseProduct(w));
-                eDamp = -dt * (st.mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(st.inertia.cwiseProduct(w)));
+                eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
+                eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
+                eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
             }
             vel += dt * accel;
             angVel += dt * angAccel;
         }
-        const Vector3r pos = st.pos + vel * dt;
+        const Vector3r pos = statePos + vel * dt;
         const Real angVelNorm = angVel.norm();
         const Real angle = angVelNorm * dt;
         if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav)) { // stability guard: keep the last finite state
@@ -152,9 +154,9 @@ void NewtonIntegrator::action() {
             diverged = std::max(diverged, id);
             continue;
         }
-        st.vel = vel;
-        st.angVel = angVel;
-        st.pos = pos;
+        hot.vel[id] = vel;
+        hot.angVel[id] = angVel;
+        statePos = pos;
         mirror[id] = pos;
         if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
             e.grav += eGrav;
@@ -167,12 +169,12 @@ void NewtonIntegrator::action() {
             Real sinHalf, cosHalf;
             sinCosHalf(angle, sinHalf, cosHalf);
             const Real k = sinHalf / angVelNorm;
-            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * st.ori;
+            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * hot.ori[id];
             // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
             // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
             // length from Python gets the exact division)
             const Real n2 = q.coeffs().squaredNorm();
-            st.ori.coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
+            hot.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
     if (reference) // (the bodies just written: in cache; holes: NaN, ignored)

@@ -2,7 +2,7 @@
 
 namespace yade {
 
-void ScGeom::precompute(const BodyHot& s1, const BodyHot& s2, Real dt, const Vector3r& currentNormal, bool isNew,
+void ScGeom::precompute(const Kinematics& s1, const Kinematics& s2, Real dt, const Vector3r& currentNormal, bool isNew,
         const Vector3r& shift2, bool avoidRatcheting) {
     if (isNew) {
         orthonormalAxis = twistAxis = Vector3r::Zero();

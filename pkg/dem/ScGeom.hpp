@@ -40,7 +40,7 @@ public:
     // refR2, penetrationDepth and contactPoint must be set before. With avoidRatcheting (two
     // spheres), the relative velocity is that of points at the reference radii; otherwise that of
     // the bodies' material points at the contact point.
-    void precompute(const BodyHot& s1, const BodyHot& s2, Real dt, const Vector3r& currentNormal, bool isNew,
+    void precompute(const Kinematics& s1, const Kinematics& s2, Real dt, const Vector3r& currentNormal, bool isNew,
             const Vector3r& shift2, bool avoidRatcheting);
     // Rotates a shear vector (force or displacement) with the contact plane: (3.3.2) step 1.
     Vector3r& rotate(Vector3r& shear) const {
