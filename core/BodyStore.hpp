@@ -7,6 +7,7 @@
 #pragma once
 #include <lib/base/Math.hpp>
 #include <lib/base/StableArray.hpp>
+#include <atomic>
 #include <cstddef>
 
 namespace yade {
@@ -42,6 +43,10 @@ public:
     StableArray<Real> mass{maxBodies};
     StableArray<int> blockedDOFsMask{maxBodies}, mask{maxBodies};
     StableArray<bool> isDamped{maxBodies}, exists{maxBodies};
+    // Sphere radii (NaN: not a sphere), filled by the interaction loop and by NumPy views.
+    StableArray<Real> radius{maxBodies};
+    // NumPy views of pos that may be written: while there are any, cached positions are not trusted.
+    std::atomic<int> writableViews{0};
 
     size_t size() const { return pos.size(); }
     void resize(size_t n); // new entries: holes

@@ -29,11 +29,12 @@ template <class F> class DispatchTable1D {
 public:
     void invalidate() { table.clear(); }
     // Resolves every class of the family now, so that get() only reads (parallel loops).
-    void fill(const std::vector<std::shared_ptr<F>>& functors, const std::string& family) {
+    void fill(const std::vector<std::shared_ptr<F>>& functors, const char* family) {
         if (table.empty()) table.assign(ClassRegistry::instance().familySize(family), unresolved());
         for (int i = 0; i < (int)table.size(); ++i) get(i, functors, family);
     }
-    F* get(int index, const std::vector<std::shared_ptr<F>>& functors, const std::string& family) {
+    // (family names as C strings: the look-up runs per body or contact, a std::string per call costs)
+    F* get(int index, const std::vector<std::shared_ptr<F>>& functors, const char* family) {
         if (table.empty()) table.assign(ClassRegistry::instance().familySize(family), unresolved());
         if (index < 0 || index >= (int)table.size()) return nullptr;
         F*& slot = table[index];
@@ -64,13 +65,14 @@ public:
     void invalidate() { table.clear(); }
     bool isFilled() const { return !table.empty(); }
     // Resolves every pair at once, so that get() only reads (safe from several threads).
-    void fill(const std::vector<std::shared_ptr<F>>& functors, const std::string& family1, const std::string& family2, bool symmetric) {
+    void fill(const std::vector<std::shared_ptr<F>>& functors, const char* family1, const char* family2, bool symmetric) {
         table.clear();
         for (int i = 0; i < ClassRegistry::instance().familySize(family1); ++i)
             for (int j = 0; j < ClassRegistry::instance().familySize(family2); ++j) get(i, j, functors, family1, family2, symmetric);
     }
-    const Entry& get(int i1, int i2, const std::vector<std::shared_ptr<F>>& functors, const std::string& family1,
-            const std::string& family2, bool symmetric) {
+    // (family names as C strings: the look-up runs per contact, a std::string per call costs)
+    const Entry& get(int i1, int i2, const std::vector<std::shared_ptr<F>>& functors, const char* family1, const char* family2,
+            bool symmetric) {
         static const Entry noneEntry{nullptr, false, true};
         if (table.empty()) {
             n1 = ClassRegistry::instance().familySize(family1);

@@ -14,7 +14,9 @@ void ForceContainer::setThreads(int n) {
 void ForceContainer::resize(size_t n) {
     if (n == force.size()) return; // (called at every step)
     sync();
-    for (auto* v : {&force, &torque, &permForce, &permTorque}) v->resize(n, Vector3r::Zero());
+    force.resize(n, Vector3r::Zero());
+    torque.resize(n, Vector3r::Zero());
+    for (auto* v : {&permForce, &permTorque}) v->resize(n, Vector3r::Zero());
     setRanges();
     synced = false;
 }

@@ -7,6 +7,7 @@
 // (contacts across two ranges) cross between cores, and a range's entries stay with the core
 // that adds to them, integrates them and zeroes them.
 #pragma once
+#include <core/BodyStore.hpp>
 #include <lib/base/Math.hpp>
 #include <vector>
 #ifdef _OPENMP
@@ -42,6 +43,8 @@ public:
     // The totals (call sync() first), for loops over all bodies.
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }
+    Vector3r* forceData() { return force.data(); }
+    Vector3r* torqueData() { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
     // One body's share of an add: a force, a torque or both.
@@ -86,7 +89,9 @@ private:
         return 0;
 #endif
     }
-    std::vector<Vector3r> force, torque, permForce, permTorque; // [body]
+    // [body]; the totals never move (NumPy views of them stay valid, see BodyArrays)
+    StableArray<Vector3r> force{BodyStore::maxBodies}, torque{BodyStore::maxBodies};
+    std::vector<Vector3r> permForce, permTorque;
     struct alignas(64) RemoteList { // (a cache line each: the threads append to their own lists at the same time)
         std::vector<Contribution> items; // to other ranges, in the order added
         std::vector<Captured>* capture = nullptr;

@@ -53,7 +53,7 @@ public:
     bool positionsCurrent() const {
         const PositionMirror& m = positionMirror;
         return m.changes == bodies.changes && m.pos.size() == bodies.size() && (m.iter == iter || m.iter + 1 == iter)
-                && m.writes == externalWrites();
+                && m.writes == externalWrites() && bodies.hot().writableViews == 0;
     }
     void positionsChanged() { positionMirror.iter = -1; }
 

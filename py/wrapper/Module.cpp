@@ -7,6 +7,7 @@
 #include <pkg/common/PyRunner.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pybind11/eval.h>
+#include <py/wrapper/ArraysWrapper.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
@@ -22,6 +23,7 @@ PYBIND11_MODULE(_yade, m) {
     pybind11::register_exception<yade::FormatError>(m, "FileFormatError", PyExc_ValueError);
     pybind11::register_exception<yade::StabilityError>(m, "StabilityError", PyExc_RuntimeError);
     yade::bindOmega(m);
+    yade::bindArrays(m);
     yade::bindShop(m);
     yade::bindSpherePack(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python

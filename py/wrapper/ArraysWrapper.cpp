@@ -1,0 +1,149 @@
+// NumPy arrays over the engine's columns (O.bodies.arrays()) and over the real contacts
+// (O.interactions.arrays()), for post-processing without a Python loop over bodies.
+#include <core/Omega.hpp>
+#include <lib/base/ExternalWrites.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+#include <py/wrapper/ArraysWrapper.hpp>
+#include <pybind11/numpy.h>
+
+namespace py = pybind11;
+
+namespace yade {
+
+Omega& omega();
+
+namespace {
+
+// Keeps what a view points into alive as long as the NumPy array lives; a writable view of the
+// positions also tells the engine that they may change behind its back (BodyStore::writableViews).
+struct ViewOwner {
+    std::shared_ptr<Scene> scene; // (its ForceContainer holds the force and torque columns)
+    std::shared_ptr<BodyStore> store;
+    bool countsAsWriter = false;
+    ~ViewOwner() {
+        if (countsAsWriter) --store->writableViews;
+    }
+};
+
+py::capsule ownerOf(const std::shared_ptr<Scene>& s, bool writesPositions) {
+    auto* o = new ViewOwner{s, s->bodies.hotStore(), writesPositions};
+    if (writesPositions) ++o->store->writableViews;
+    return py::capsule(o, [](void* p) { delete static_cast<ViewOwner*>(p); });
+}
+
+// An n × columns array of doubles (columns = 0: a vector) over `data`, `stride` bytes per row.
+template <class T> py::array view(T* data, size_t n, size_t columns, bool writable, const py::capsule& owner) {
+    std::vector<py::ssize_t> shape{(py::ssize_t)n}, strides{(py::ssize_t)sizeof(T)};
+    if (columns) {
+        shape.push_back((py::ssize_t)columns);
+        strides.push_back((py::ssize_t)(sizeof(T) / columns));
+    }
+    using Scalar = std::conditional_t<std::is_same_v<T, int> || std::is_same_v<T, bool>, T, Real>;
+    py::array a(py::dtype::of<Scalar>(), shape, strides, reinterpret_cast<Scalar*>(data), owner);
+    if (!writable) py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+struct BodyArrays {
+    py::dict arrays;
+};
+
+BodyArrays bodyArrays() {
+    std::shared_ptr<Scene> s = omega().scenePtr();
+    BodyStore& st = s->bodies.hot();
+    const size_t n = s->bodies.size();
+    s->forces.resize(n);
+    s->forces.sync(); // (the totals of the last step, including what other threads added)
+    // sphere radii, refreshed here from the shapes
+    st.radius.resize(n, NaN);
+    for (size_t id = 0; id < n; ++id) {
+        const Body* b = s->bodies[(Body::id_t)id].get();
+        const Sphere* sphere = b ? dynamic_cast<const Sphere*>(b->shape.get()) : nullptr;
+        st.radius[id] = sphere ? sphere->radius : NaN;
+    }
+    const py::capsule readOnly = ownerOf(s, false), writes = ownerOf(s, true);
+    BodyArrays r;
+    r.arrays["pos"] = view(st.pos.data(), n, 3, true, writes);
+    r.arrays["vel"] = view(st.vel.data(), n, 3, true, readOnly);
+    r.arrays["angVel"] = view(st.angVel.data(), n, 3, true, readOnly);
+    r.arrays["ori"] = view(st.ori.data(), n, 4, true, readOnly);
+    r.arrays["mass"] = view(st.mass.data(), n, 0, true, readOnly);
+    r.arrays["inertia"] = view(st.inertia.data(), n, 3, true, readOnly);
+    r.arrays["force"] = view(s->forces.forceData(), n, 3, false, readOnly);
+    r.arrays["torque"] = view(s->forces.torqueData(), n, 3, false, readOnly);
+    r.arrays["radius"] = view(st.radius.data(), n, 0, false, readOnly);
+    r.arrays["exists"] = view(st.exists.data(), n, 0, false, readOnly);
+    return r;
+}
+
+// Real interactions whose geometry is a ScGeom and physics a NormShearPhys (the others are left out).
+py::dict interactionArrays() {
+    Scene& s = omega().scene();
+    std::vector<int> id1, id2;
+    std::vector<Vector3r> fn, fs, normal, point;
+    std::vector<Real> depth;
+    for (const auto& I : s.interactions) {
+        if (!I->isReal()) continue;
+        const auto* g = dynamic_cast<const ScGeom*>(I->geom.get());
+        const auto* p = dynamic_cast<const NormShearPhys*>(I->phys.get());
+        if (!g || !p) continue;
+        id1.push_back(I->id1);
+        id2.push_back(I->id2);
+        fn.push_back(p->normalForce);
+        fs.push_back(p->shearForce);
+        normal.push_back(g->normal);
+        point.push_back(g->contactPoint);
+        depth.push_back(g->penetrationDepth);
+    }
+    auto vectors = [](const std::vector<Vector3r>& v) {
+        py::array_t<Real> a({(py::ssize_t)v.size(), (py::ssize_t)3});
+        auto m = a.mutable_unchecked<2>();
+        for (size_t i = 0; i < v.size(); ++i)
+            for (int c = 0; c < 3; ++c) m(i, c) = v[i][c];
+        return a;
+    };
+    py::dict d;
+    d["id1"] = py::array_t<int>((py::ssize_t)id1.size(), id1.data());
+    d["id2"] = py::array_t<int>((py::ssize_t)id2.size(), id2.data());
+    d["normalForce"] = vectors(fn);
+    d["shearForce"] = vectors(fs);
+    d["normal"] = vectors(normal);
+    d["contactPoint"] = vectors(point);
+    d["penetrationDepth"] = py::array_t<Real>((py::ssize_t)depth.size(), depth.data());
+    return d;
+}
+
+} // namespace
+
+void bindArrays(py::module_& m) {
+    py::class_<BodyArrays>(m, "BodyArrays", R"(NumPy views of the bodies' state, indexed by body id (from O.bodies.arrays()).
+
+Attributes (arrays of float64 unless said): pos, vel, angVel, inertia (N×3), ori (N×4: x, y, z, w),
+mass (N), force, torque (N×3, read-only: the totals of the last step), radius (N, read-only, NaN
+for bodies that are not spheres), exists (N, bool, read-only: False for erased ids).
+
+These are views, not copies: they read and write the engine's own columns. Writing pos, vel,
+angVel, ori, mass or inertia changes the simulation (values are not checked: keep them finite).
+A view covers the N bodies there were when it was taken and stays valid memory as long as it
+lives, also after O.reset(); bodies appended later are not in it (take a new one), an erased
+body's rows keep their last values with exists False. radius is refreshed from the shapes when
+the view is taken. While a view of pos is alive the engine does not rely on positions it cached.)")
+            .def("__getattr__", [](BodyArrays& a, const std::string& name) -> py::object {
+                if (!a.arrays.contains(name)) throw py::attribute_error("BodyArrays has no array '" + name + "' (have: " + std::string(py::str(py::list(a.arrays.attr("keys")()))) + ")");
+                return a.arrays[name.c_str()];
+            })
+            .def("keys", [](BodyArrays& a) { return py::list(a.arrays.attr("keys")()); })
+            .def("__dir__", [](BodyArrays& a) { return py::list(a.arrays.attr("keys")()); });
+    // as methods of O.bodies and O.interactions (bound by bindOmega)
+    py::object bodiesClass = m.attr("BodyContainer"), interactionsClass = m.attr("InteractionContainer");
+    py::setattr(bodiesClass, "arrays",
+            py::cpp_function([](py::object) { return bodyArrays(); }, py::is_method(bodiesClass), py::name("arrays"),
+                    "NumPy views of the bodies' state (a BodyArrays: pos, vel, angVel, ori, mass, inertia, force, torque, radius, exists); see help(BodyArrays) for how long they stay valid"));
+    py::setattr(interactionsClass, "arrays",
+            py::cpp_function([](py::object) { return interactionArrays(); }, py::is_method(interactionsClass), py::name("arrays"),
+                    "The real contacts (ScGeom + NormShearPhys) as a dict of NumPy arrays, copies taken now: id1, id2, normalForce, shearForce, normal, contactPoint, penetrationDepth (row i is one contact; forces are those on body 2)"));
+}
+
+} // namespace yade

@@ -1,0 +1,152 @@
+"""The contiguous body store seen from Python: State objects as views of the columns, NumPy views
+of the columns (O.bodies.arrays()) and arrays of the real contacts (O.interactions.arrays())."""
+import numpy as np
+import pytest
+
+from yade import *
+from yade.utils import kineticEnergy, sphere
+
+pytestmark = pytest.mark.usefixtures("fresh_scene")
+
+R = 0.01
+
+
+def lattice(n=4, seed=1):
+    """n³ spheres on a compressed cubic lattice with random velocities and spins, run 30 steps."""
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    a = 2 * R * 0.99
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                O.bodies.append(sphere((i * a, j * a, k * a), R))
+    rng = np.random.default_rng(seed)
+    for b in O.bodies:
+        b.state.vel = tuple(rng.normal(0, 0.01, 3))
+        b.state.angVel = tuple(rng.normal(0, 1, 3))
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0.1)]
+    O.dt = 1e-6
+    O.run(30, True)
+
+
+def test_kinetic_energy_from_the_arrays_equals_kineticEnergy():
+    lattice()
+    a = O.bodies.arrays()
+    assert a.pos.shape == (64, 3) and a.mass.shape == (64,)
+    # spheres: the inertia is isotropic, so the global-frame rotation does not matter
+    ek = 0.5 * (a.mass * (a.vel ** 2).sum(axis=1)).sum() + 0.5 * (a.inertia * a.angVel ** 2).sum()
+    assert ek > 0
+    assert ek == pytest.approx(kineticEnergy(), rel=1e-12)
+    loop = sum(0.5 * b.state.mass * b.state.vel.squaredNorm() + 0.5 * b.state.inertia[0] * b.state.angVel.squaredNorm()
+               for b in O.bodies)
+    assert ek == pytest.approx(loop, rel=1e-12)
+
+
+def test_stress_from_the_contact_arrays_equals_the_per_contact_loop():
+    lattice()
+    a, c = O.bodies.arrays(), O.interactions.arrays()
+    n = len(c["id1"])
+    assert n == O.interactions.countReal() and n >= 3 * 4 * 4 * 3  # (at least the lattice bonds)
+    f = c["normalForce"] + c["shearForce"]            # on body 2
+    branch = a.pos[c["id2"]] - a.pos[c["id1"]]
+    V = 1.0
+    sigma = np.einsum("ki,kj->ij", f, branch) / V    # Love-Weber: sum of f ⊗ l
+    loop = np.zeros((3, 3))
+    for i in O.interactions:
+        fi = i.phys.normalForce + i.phys.shearForce
+        li = O.bodies[i.id2].state.pos - O.bodies[i.id1].state.pos
+        loop += np.outer(np.array(fi), np.array(li))
+    assert np.abs(sigma).max() > 0
+    assert np.allclose(sigma, loop, rtol=1e-12, atol=1e-15 * np.abs(loop).max())
+    assert np.all(c["penetrationDepth"] > 0)
+    # forces in the body arrays are the sums of the contact forces (no gravity, no other load)
+    total = np.zeros((64, 3))
+    np.add.at(total, c["id1"], -f)
+    np.add.at(total, c["id2"], f)
+    assert np.allclose(a.force, total, rtol=1e-9, atol=1e-12 * np.abs(total).max())
+
+
+def test_writes_through_the_views_reach_the_engine():
+    lattice(n=2)
+    a = O.bodies.arrays()
+    a.vel[3] = (0.5, 0, 0)
+    assert tuple(O.bodies[3].state.vel) == (0.5, 0, 0)
+    a.pos[5] = (1.0, 1.0, 1.0)                         # far from everything
+    O.bodies[5].state.vel = (0, 0, 0)
+    O.bodies[5].state.angVel = (0, 0, 0)
+    O.step()
+    assert tuple(O.bodies[5].state.pos) == (1.0, 1.0, 1.0)
+    assert len(O.bodies[5].intrs()) == 0               # the collider and the loop saw the move
+    a.mass[0] = 2 * a.mass[0]
+    assert O.bodies[0].state.mass == a.mass[0]
+
+
+def test_read_only_views_refuse_writes():
+    lattice(n=2)
+    a = O.bodies.arrays()
+    for name in ("force", "torque", "radius", "exists"):
+        with pytest.raises(ValueError):
+            getattr(a, name)[0] = 1
+    with pytest.raises(AttributeError, match="no array 'positions'"):
+        a.positions
+
+
+def test_a_view_covers_the_bodies_of_its_time_and_outlives_the_scene():
+    lattice(n=2)
+    a = O.bodies.arrays()
+    O.bodies.append(sphere((5, 5, 5), R))
+    assert len(a.pos) == 8 and len(O.bodies.arrays().pos) == 9
+    assert np.all(a.radius == R)
+    O.bodies.erase(2)
+    assert not a.exists[2] and a.exists[3]
+    kept = a.pos.copy()
+    O.reset()                                          # the columns stay alive with the view
+    assert np.array_equal(np.delete(a.pos, 2, axis=0), np.delete(kept, 2, axis=0))
+
+
+def test_state_made_before_the_body_joins_the_scene():
+    st = State(pos=(1, 2, 3), vel=(4, 5, 6), mass=2)
+    b = Body(shape=Sphere(radius=R), state=st, material=FrictMat())
+    O.bodies.append(b)
+    assert tuple(O.bodies.arrays().pos[0]) == (1, 2, 3)
+    st.pos = (7, 8, 9)                                 # the same object, now a view of the column
+    assert tuple(O.bodies.arrays().vel[0]) == (4, 5, 6) and tuple(O.bodies.arrays().pos[0]) == (7, 8, 9)
+    v = st.vel                                         # a vector view into the column
+    v[0] = 10
+    assert O.bodies.arrays().vel[0][0] == 10
+
+
+def test_a_state_keeps_its_values_when_its_body_leaves():
+    b = sphere((1, 2, 3), R)
+    O.bodies.append(b)
+    st = b.state
+    st.vel = (1, 1, 1)
+    O.bodies.erase(b.id)
+    assert tuple(st.pos) == (1, 2, 3) and tuple(st.vel) == (1, 1, 1)
+    st.pos = (0, 0, 0)                                 # its own copy now
+    assert tuple(st.pos) == (0, 0, 0)
+
+
+def test_a_new_state_of_a_body_in_the_scene_takes_over_its_entries():
+    b = sphere((1, 2, 3), R)
+    O.bodies.append(b)
+    old = b.state
+    b.state = State(pos=(4, 5, 6), mass=1)
+    assert tuple(O.bodies.arrays().pos[0]) == (4, 5, 6)
+    assert tuple(old.pos) == (1, 2, 3)                 # the old one keeps its values
+    old.pos = (0, 0, 0)
+    assert tuple(O.bodies[0].state.pos) == (4, 5, 6)
+    with pytest.raises(ValueError, match="cannot be None"):
+        b.state = None
+    assert tuple(O.bodies[0].state.pos) == (4, 5, 6)
+
+
+def test_mask_reaches_the_column_the_integrator_reads():
+    O.bodies.append([sphere((0, 0, 0), R), sphere((1, 0, 0), R)])
+    O.bodies[1].mask = 2
+    O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10), mask=1)]
+    O.dt = 1e-3
+    O.run(3, True)
+    assert O.bodies[0].state.pos[2] < 0 and O.bodies[1].state.pos[2] == 0
