@@ -150,3 +150,25 @@ def test_mask_reaches_the_column_the_integrator_reads():
     O.dt = 1e-3
     O.run(3, True)
     assert O.bodies[0].state.pos[2] < 0 and O.bodies[1].state.pos[2] == 0
+
+
+# ------------------------------------------------------------------ files written before the store
+
+DATA = __import__("os").path.join(__import__("os").path.dirname(__file__), "data")
+
+
+@pytest.mark.parametrize("name", ["saved-before-store.yade.gz", "saved-before-store.xml"])
+def test_a_file_saved_before_the_body_store_loads_and_runs_the_same(name):
+    """Written by commit 802e60c (tests/data/make_saved_before_store.py): the scene after 40
+    steps, and the state the old build reached 50 steps later."""
+    import json, os
+    expected = json.load(open(os.path.join(DATA, "saved-before-store.json")))
+    O.load(os.path.join(DATA, name))
+    assert O.iter == 40 and len(O.bodies) == len(expected["pos"])
+    assert O.bodies.arrays().exists.all()
+    O.run(50, True)
+    assert O.iter == expected["iter"] and O.interactions.countReal() == expected["real"]
+    a = O.bodies.arrays()
+    assert np.allclose(a.pos, expected["pos"], rtol=1e-12, atol=1e-15)
+    assert np.allclose(a.vel, expected["vel"], rtol=1e-10, atol=1e-13)
+    assert np.allclose([list(b.state.ori) for b in O.bodies], expected["ori"], rtol=1e-12, atol=1e-15)

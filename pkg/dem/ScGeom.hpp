@@ -43,10 +43,12 @@ public:
     void precompute(const Kinematics& s1, const Kinematics& s2, Real dt, const Vector3r& currentNormal, bool isNew,
             const Vector3r& shift2, bool avoidRatcheting);
     // Rotates a shear vector (force or displacement) with the contact plane: (3.3.2) step 1.
-    Vector3r& rotate(Vector3r& shear) const {
-        shear -= shear.cross(orthonormalAxis);
-        shear -= shear.cross(twistAxis);
-        return shear;
+    Vector3r& rotate(Vector3r& shear) const { return shear = rotated(shear); }
+    // The same on a value (kept in registers: a vector updated in memory component by component
+    // made the next whole-vector read wait for the stores).
+    Vector3r rotated(const Vector3r& shear) const { return minusCross(minusCross(shear, orthonormalAxis), twistAxis); }
+    static Vector3r minusCross(const Vector3r& v, const Vector3r& a) { // v - v × a
+        return Vector3r(v[0] - (v[1] * a[2] - v[2] * a[1]), v[1] - (v[2] * a[0] - v[0] * a[2]), v[2] - (v[0] * a[1] - v[1] * a[0]));
     }
     YADE_INDEXABLE(ScGeom)
 };
