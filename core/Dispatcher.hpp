@@ -64,9 +64,12 @@ public:
     };
     void invalidate() { table.clear(); }
     bool isFilled() const { return !table.empty(); }
+    // Unique to each filling of each table (for caches of the functors it chose).
+    long long generation() const { return filled; }
     // Resolves every pair at once, so that get() only reads (safe from several threads).
     void fill(const std::vector<std::shared_ptr<F>>& functors, const char* family1, const char* family2, bool symmetric) {
         table.clear();
+        filled = Dispatcher::newGeneration();
         for (int i = 0; i < ClassRegistry::instance().familySize(family1); ++i)
             for (int j = 0; j < ClassRegistry::instance().familySize(family2); ++j) get(i, j, functors, family1, family2, symmetric);
     }
@@ -75,6 +78,7 @@ public:
             bool symmetric) {
         static const Entry noneEntry{nullptr, false, true};
         if (table.empty()) {
+            filled = Dispatcher::newGeneration();
             n1 = ClassRegistry::instance().familySize(family1);
             n2 = ClassRegistry::instance().familySize(family2);
             table.assign((size_t)n1 * n2, Entry());
@@ -88,6 +92,7 @@ public:
 private:
     std::vector<Entry> table;
     int n1 = 0, n2 = 0;
+    long long filled = -1;
     static Entry resolve(int i1, int i2, const std::vector<std::shared_ptr<F>>& functors, const std::string& family1,
             const std::string& family2, bool symmetric) {
         const auto chain1 = classChain(family1, i1), chain2 = classChain(family2, i2);

@@ -28,6 +28,14 @@ public:
     // A contact's force on body 1 (its opposite on body 2) and the torques on both.
     void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
         const int th = thread();
+        if (!remote[th].capture && owns(th, id1) && owns(th, id2)) { // the common case: both in place (as addInPlace)
+            force[id1] += f1;
+            torque[id1] += t1;
+            force[id2] -= f1;
+            torque[id2] += t2;
+            markUnsynced();
+            return;
+        }
         put(th, {id1, Contribution::both, f1, t1});
         put(th, {id2, Contribution::both, -f1, t2});
     }
@@ -82,9 +90,9 @@ private:
         if (c.kind != Contribution::force) torque[c.id] += c.t;
     }
     void setRanges();
-    static int thread() {
+    int thread() const { // (with one thread, no library call)
 #ifdef _OPENMP
-        return omp_get_thread_num();
+        return remote.size() == 1 ? 0 : omp_get_thread_num();
 #else
         return 0;
 #endif

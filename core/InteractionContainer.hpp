@@ -1,6 +1,7 @@
 // O.interactions: a flat array of interactions plus, per body, the list of its partners.
 #pragma once
 #include <core/Interaction.hpp>
+#include <core/LawDispatcher.hpp>
 #include <vector>
 
 namespace yade {
@@ -40,10 +41,14 @@ public:
     // The interaction's geometry and physics objects (null when absent), so that the batched
     // functors reach them without reading the Interaction: kept up to date by the interaction
     // loop, which calls syncObjects() after anything was set from Python.
+    // With them, the Law2 functor chosen for the pair (null: not chosen yet), valid while
+    // lawTable is the dispatch table of the loop that chose it (InteractionLoop clears it else).
     struct Objects {
         IGeom* geom = nullptr;
         IPhys* phys = nullptr;
+        LawFunctor* law = nullptr;
     };
+    long long lawTable = -1;
     std::vector<Objects> objects;
     void syncObjects(); // from every interaction's geom and phys
     long long objectsWrites = -1; // externalWrites() at the last syncObjects()

@@ -62,6 +62,7 @@ public:
     const DispatchTable2D<LawFunctor>::Entry& getFunctor(const IGeom& g, const IPhys& p) {
         return table.get(g.getClassIndex(), p.getClassIndex(), functors, "IGeom", "IPhys", false);
     }
+    long long tableGeneration() const { return table.generation(); }
 
 private:
     DispatchTable2D<LawFunctor> table;

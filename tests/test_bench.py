@@ -250,3 +250,17 @@ def test_bundled_scene_is_the_shared_one():
     if not shared.exists():
         pytest.skip("no shared copy of the scene on this machine")
     assert (BENCH / "deposition.py").read_bytes() == shared.read_bytes()
+
+
+def test_dense_harness_runs_and_prints_its_table():
+    """scripts/bench/dense_bench.py on a small lattice, this engine only: the table, the engine
+    shares and exit status 0 (the reference and LAMMPS are left out to keep it short)."""
+    p = subprocess.run([sys.executable, str(BENCH / "dense_bench.py"), "--sizes", "300", "--steps", "20",
+                        "--repeats", "1", "--no-reference", "--no-lammps"], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr
+    row = re.search(r"^here\s+(\d+)\s+1\s+([0-9.]+)\s+([0-9.e+]+)\s+(\d+)\s+(\d+)", p.stdout, re.M)
+    assert row, p.stdout
+    assert int(row.group(1)) == 300 and float(row.group(2)) > 0 and int(row.group(4)) > 2 * 294 and int(row.group(5)) > 10
+    shares = dict(re.findall(r"(\w+) ([0-9.]+)%", p.stdout.split("shares of this engine's step:")[1]))
+    assert {"InteractionLoop", "NewtonIntegrator"} <= set(shares)
+    assert sum(map(float, shares.values())) == pytest.approx(100, abs=1)

@@ -229,6 +229,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     Scratch& sc = *scratch[threadNumber()];
     sc.entries.clear();
     sc.contacts.clear();
+    sc.oneGeomFunctor = true;
     // 1. the pairs to compute, and their Ig2 functor
     for (size_t j = j0; j < j1; ++j) {
         const size_t i = todo ? todo[j] : j;
@@ -258,6 +259,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         // start now, all at once, instead of one contact after the other
         prefetchObject(o.geom);
         prefetchObject(o.phys);
+        sc.oneGeomFunctor &= sc.entries.empty() || sc.entries[0].geom == geomEntry.functor;
         sc.entries.push_back(Scratch::Entry{k, geomEntry.functor, nullptr, 0});
         sc.contacts.emplace_back(I, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
     }
@@ -265,23 +267,27 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     if (n == 0) return;
     // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
     const BodyColumns columns{&s.bodies.hot(), shapes, shapeCache.radius.data()};
-    for (size_t first = 0; first < n; ++first) {
-        IGeomFunctor* f = sc.entries[first].geom;
-        if (!f) continue; // done
-        sc.batch.clear();
-        sc.where.clear();
-        for (size_t e = first; e < n; ++e)
-            if (sc.entries[e].geom == f) {
-                sc.batch.push_back(sc.contacts[e]);
-                sc.where.push_back(e);
+    sc.flags.resize(n);
+    if (sc.oneGeomFunctor) { // (the common case: all of one shape pair)
+        sc.entries[0].geom->goBatch(columns, sc.contacts.data(), n, sc.flags.data());
+        for (size_t e = 0; e < n; ++e) sc.entries[e].real = sc.flags[e];
+    } else {
+        for (size_t first = 0; first < n; ++first) {
+            IGeomFunctor* f = sc.entries[first].geom;
+            if (!f) continue; // done
+            sc.batch.clear();
+            sc.where.clear();
+            for (size_t e = first; e < n; ++e)
+                if (sc.entries[e].geom == f) {
+                    sc.batch.push_back(sc.contacts[e]);
+                    sc.where.push_back(e);
+                }
+            f->goBatch(columns, sc.batch.data(), sc.batch.size(), sc.flags.data());
+            for (size_t m = 0; m < sc.where.size(); ++m) {
+                sc.entries[sc.where[m]].geom = nullptr;
+                sc.entries[sc.where[m]].real = sc.flags[m];
+                sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // (a new one, or the same)
             }
-        sc.flags.resize(sc.batch.size());
-        f->goBatch(columns, sc.batch.data(), sc.batch.size(), sc.flags.data());
-        for (size_t m = 0; m < sc.where.size(); ++m) {
-            Scratch::Entry& x = sc.entries[sc.where[m]];
-            x.geom = nullptr;
-            x.real = sc.flags[m];
-            if (sc.batch[m].geom != sc.contacts[sc.where[m]].geom) objects[x.k].geom = sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // a new one
         }
     }
     // 3. in list order: contacts that ended, physics of new ones, and each one's Law2 functor
@@ -290,6 +296,8 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     for (size_t e = 0; e < n; ++e) {
         Scratch::Entry& x = sc.entries[e];
         Contact& c = sc.contacts[e];
+        InteractionContainer::Objects& o = objects[x.k];
+        if (o.geom != c.geom) o.geom = c.geom; // a new one
         if (!x.real) {
             if (c.isReal()) endContact(intrs, x.k); // the geometry says the contact is over
             setWasReal(intrs, x.k, false);
@@ -308,7 +316,8 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 continue;
             }
             physEntry.functor->go(b1.material, b2.material, I);
-            objects[x.k].phys = c.phys = I.phys.get();
+            o.phys = c.phys = I.phys.get();
+            o.law = nullptr;
             I.iterMadeReal = s.iter;
 #pragma omp critical(yadeNewContact)
             {
@@ -316,13 +325,15 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 s.newContactBodies.push_back(I.id2);
             }
         }
-        const auto& lawEntry = lawDispatcher->getFunctor(*c.geom, *c.phys);
-        if (!lawEntry.functor) {
+        if (!o.law) { // (chosen once per contact)
+            o.law = lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
+            if (!o.law) {
 #pragma omp critical(yadeError)
-            error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
-            continue;
+                error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
+                continue;
+            }
         }
-        x.law = lawEntry.functor;
+        x.law = o.law;
         sc.entries[live] = x;
         sc.contacts[live] = c;
         ++live;
@@ -370,6 +381,10 @@ void InteractionLoop::action() {
     if (intrs.objectsWrites != externalWrites() || intrs.objects.size() != intrs.size()) { // (Python may have set geom or phys)
         intrs.objectsWrites = externalWrites();
         intrs.syncObjects();
+    }
+    if (intrs.lawTable != lawDispatcher->tableGeneration()) { // the Law2 functors chosen by another table
+        for (auto& o : intrs.objects) o.law = nullptr;
+        intrs.lawTable = lawDispatcher->tableGeneration();
     }
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {

@@ -138,6 +138,7 @@ private:
         std::vector<Contact> batch;
         std::vector<size_t> where;
         std::vector<char> flags;
+        bool oneGeomFunctor = true; // every entry has the same Ig2 functor
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,

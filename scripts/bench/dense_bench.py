@@ -69,7 +69,7 @@ def run_lammps(n, steps, threads):
 
 def shares(n, steps, threads):
     script = ("import sys, runpy\nsys.argv = [%r, %r, %r]\nfrom yade import O, timing\nO.timingEnabled = True\n"
-              "runpy.run_path(%r, run_name='__main__')\ntiming.stats()\n") % (SCENE, str(n), str(steps), SCENE)
+              "runpy.run_path(%r, init_globals=dict(globals()), run_name='__main__')\ntiming.stats()\n") % (SCENE, str(n), str(steps), SCENE)
     with tempfile.NamedTemporaryFile("w", suffix=".py", delete=False) as f:
         f.write(script)
     try:
