@@ -48,6 +48,21 @@ public:
     // NumPy views of pos that may be written: while there are any, cached positions are not trusted.
     std::atomic<int> writableViews{0};
 
+    // The columns as plain pointers, for loops: taken once before the loop, they stay in registers
+    // (through the StableArray members the compiler reloads each base after every store, since a
+    // store might have changed it).
+    struct Columns {
+        Vector3r *pos, *vel, *angVel, *inertia;
+        Quaternionr* ori;
+        Real* mass;
+        int *blockedDOFsMask, *mask;
+        bool *isDamped, *exists;
+        Kinematics kinematics(size_t id) const { return Kinematics{pos[id], vel[id], angVel[id], ori[id]}; }
+    };
+    Columns columns() {
+        return Columns{pos.data(), vel.data(), angVel.data(), inertia.data(), ori.data(), mass.data(), blockedDOFsMask.data(), mask.data(),
+                isDamped.data(), exists.data()};
+    }
     size_t size() const { return pos.size(); }
     void resize(size_t n); // new entries: holes
     BodyHot get(size_t id) const;

@@ -9,7 +9,7 @@ namespace yade {
 // What a batch of contacts reads about the bodies, indexed by id: the store's columns, their
 // shapes (null: none, or a hole) and the radii of spheres (NaN for other shapes).
 struct BodyColumns {
-    const BodyStore* store = nullptr;
+    BodyStore::Columns store;
     const Shape* const* shape = nullptr;
     const Real* radius = nullptr;
 };
@@ -48,10 +48,12 @@ public:
     }
     void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) override {
         Derived& d = self();
+        const BodyStore::Columns cols = b.store; // (locals: the char stores to result may alias anything in memory)
+        const Shape* const* shape = b.shape;
         for (size_t j = 0; j < n; ++j) {
             Contact& x = c[j];
-            result[j] = d.Derived::go(static_cast<const S1&>(*b.shape[x.id1]), static_cast<const S2&>(*b.shape[x.id2]),
-                    b.store->kinematics(x.id1), b.store->kinematics(x.id2), Vector3r::Zero(), false, x);
+            result[j] = d.Derived::go(static_cast<const S1&>(*shape[x.id1]), static_cast<const S2&>(*shape[x.id2]), cols.kinematics(x.id1),
+                    cols.kinematics(x.id2), Vector3r::Zero(), false, x);
         }
     }
 

@@ -4,6 +4,7 @@
 // loops and NumPy views read it as a plain array. For trivially copyable records only.
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <new>
 #include <stdexcept>
@@ -19,12 +20,18 @@ template <class T> class StableArray {
 public:
     // The address space is reserved inaccessible and made writable as the array grows, so that
     // only what is used counts against the system's memory commitment.
+    // Each array starts a different number of cache lines into its first page: arrays that all
+    // start on a page boundary map entry i of every column to the same cache set, and a loop over
+    // a dozen columns then evicts its own lines (the caches have 8 to 16 ways).
     explicit StableArray(size_t maxElements) : capacity(maxElements) {
-        void* p = mmap(nullptr, bytes(), PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        static std::atomic<unsigned> arrays{0};
+        offset = 64 * ((arrays++ * 23) % 64);
+        void* p = mmap(nullptr, bytes() + offset, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
         if (p == MAP_FAILED) throw std::bad_alloc();
-        items = static_cast<T*>(p);
+        base = static_cast<char*>(p);
+        items = reinterpret_cast<T*>(base + offset);
     }
-    ~StableArray() { munmap(items, bytes()); }
+    ~StableArray() { munmap(base, bytes() + offset); }
     StableArray(const StableArray&) = delete;
     StableArray& operator=(const StableArray&) = delete;
 
@@ -37,9 +44,9 @@ public:
     // New elements get `fill`; shrinking keeps the memory (the addresses stay valid).
     void resize(size_t n, const T& fill = T()) {
         if (n > capacity) throw std::length_error("StableArray: more than " + std::to_string(capacity) + " elements");
-        if (n * sizeof(T) > usable) { // in steps of 1 MiB
-            const size_t want = std::min(bytes(), (n * sizeof(T) + step - 1) / step * step);
-            if (mprotect(items, want, PROT_READ | PROT_WRITE) != 0) throw std::bad_alloc();
+        if (offset + n * sizeof(T) > usable) { // in steps of 1 MiB
+            const size_t want = std::min(bytes() + offset, (offset + n * sizeof(T) + step - 1) / step * step);
+            if (mprotect(base, want, PROT_READ | PROT_WRITE) != 0) throw std::bad_alloc();
             usable = want;
         }
         for (size_t i = count; i < n; ++i) new (items + i) T(fill);
@@ -51,9 +58,11 @@ public:
 
 private:
     size_t bytes() const { return capacity * sizeof(T); }
+    char* base = nullptr; // the mapping
+    size_t offset = 0;    // where items start in it
     T* items = nullptr;
     size_t count = 0, capacity;
-    size_t usable = 0; // bytes made writable
+    size_t usable = 0; // bytes of the mapping made writable
     static constexpr size_t step = size_t(1) << 20;
 };
 

@@ -266,7 +266,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const size_t n = sc.entries.size();
     if (n == 0) return;
     // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
-    const BodyColumns columns{&s.bodies.hot(), shapes, shapeCache.radius.data()};
+    const BodyColumns columns{s.bodies.hot().columns(), shapes, shapeCache.radius.data()};
     sc.flags.resize(n);
     if (sc.oneGeomFunctor) { // (the common case: all of one shape pair)
         sc.entries[0].geom->goBatch(columns, sc.contacts.data(), n, sc.flags.data());

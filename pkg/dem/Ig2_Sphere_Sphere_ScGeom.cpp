@@ -9,9 +9,11 @@ bool Ig2_Sphere_Sphere_ScGeom::go(const Sphere& s1, const Sphere& s2, const Kine
 }
 
 void Ig2_Sphere_Sphere_ScGeom::goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) {
+    const BodyStore::Columns cols = b.store; // (locals: the char stores to result may alias anything in memory)
+    const Real* radius = b.radius;
     for (size_t j = 0; j < n; ++j) {
         Contact& x = c[j];
-        result[j] = go(b.radius[x.id1], b.radius[x.id2], b.store->kinematics(x.id1), b.store->kinematics(x.id2), Vector3r::Zero(), false, x);
+        result[j] = go(radius[x.id1], radius[x.id2], cols.kinematics(x.id1), cols.kinematics(x.id2), Vector3r::Zero(), false, x);
     }
 }
 

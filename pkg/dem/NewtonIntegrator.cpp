@@ -76,7 +76,7 @@ void NewtonIntegrator::action() {
     long diverged = -1; // a body whose new state is not finite (not written)
     const long long writesBefore = externalWrites();
     const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
-    BodyStore& hot = s.bodies.hot();
+    const BodyStore::Columns hot = s.bodies.hot().columns();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
     const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
