@@ -5,9 +5,24 @@ namespace yade {
 
 bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, const Sphere& s, const Kinematics& st1, const Kinematics& st2,
         const Vector3r& shift2, bool force, Contact& contact) {
+    return go(f, s.radius, st1, st2, shift2, force, contact);
+}
+
+void Ig2_Facet_Sphere_ScGeom::goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) {
+    const BodyStore::Columns cols = b.store; // (locals: the char stores to result may alias anything in memory)
+    const Shape* const* shape = b.shape;
+    const Real* radius = b.radius;
+    for (size_t j = 0; j < n; ++j) {
+        Contact& x = c[j];
+        result[j] = go(static_cast<const Facet&>(*shape[x.id1]), radius[x.id2], cols.kinematics(x.id1), cols.kinematics(x.id2), Vector3r::Zero(),
+                false, x);
+    }
+}
+
+bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, Real r, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
+        Contact& contact) {
     const Matrix3r toGlobal = st1.ori.toRotationMatrix();
     const Vector3r c = toGlobal.transpose() * (st2.pos + shift2 - st1.pos); // sphere center, facet frame
-    const Real r = s.radius;
     Vector3r normal = f.normal;
     Real L = normal.dot(c); // distance from the facet plane
     if (L < 0) {

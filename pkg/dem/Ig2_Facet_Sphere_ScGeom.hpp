@@ -16,6 +16,9 @@ public:
     }
     bool go(const Facet& f, const Sphere& s, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
             Contact& contact);
+    // The batch reads the spheres' radii from BodyColumns (contiguous) instead of their shapes.
+    void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) override;
+    bool go(const Facet& f, Real r, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force, Contact& contact);
     Real quickRejectFactor() const override { return 1; } // go() returns false when the plane is out of reach
 };
 

@@ -110,31 +110,37 @@ void NewtonIntegrator::action() {
     EnergySums mySums; // this thread's energy terms (without work stealing)
     // bodies lo .. hi-1, energy terms into e (each body's new state does not depend on the thread that computes it)
     auto integrate = [&](long lo, long hi, EnergySums& e) {
+    // (the columns in locals: through the captured references, every bool or char store made the
+    // compiler reload each base pointer)
+    const BodyStore::Columns h = hot;
+    Vector3r* const mir = mirror.data();
+    const Vector3r* const F = forces;
+    const Vector3r* const T = torques;
     for (long id = lo; id < hi; ++id) {
-        if (!hot.exists[id]) { // (the State of a body is a view of its entries in these columns)
-            mirror[id] = Vector3r::Constant(NaN);
+        if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
+            mir[id] = Vector3r::Constant(NaN);
             continue;
         }
-        Vector3r& statePos = hot.pos[id];
-        mirror[id] = statePos; // replaced below by the new position
-        if (moveMask != -1 && !(hot.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
-        const int blocked = hot.blockedDOFsMask[id];
-        const Real mass = hot.mass[id];
-        const Vector3r& inertia = hot.inertia[id];
+        Vector3r& statePos = h.pos[id];
+        mir[id] = statePos; // replaced below by the new position
+        if (moveMask != -1 && !(h.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
+        const int blocked = h.blockedDOFsMask[id];
+        const Real mass = h.mass[id];
+        const Vector3r& inertia = h.inertia[id];
         const bool dynamic = blocked != State::DOF_ALL;
-        Vector3r vel = hot.vel[id], angVel = hot.angVel[id];
+        Vector3r vel = h.vel[id], angVel = h.angVel[id];
         Real eGrav = 0, eKin = 0, eDamp = 0; // energy terms, added once the new state is known finite
         if (dynamic) {
-            const bool damped = lambda != 0 && hot.isDamped[id];
-            Vector3r accel = accelOf(forces[id], Vector3r::Constant(mass), blocked, 0);
+            const bool damped = lambda != 0 && h.isDamped[id];
+            Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
             const Vector3r gFree = freeGravity(g, blocked);
             if (gravityDamped) accel += gFree;
             const Vector3r undamped = accel;
             if (damped) damp(accel, vel, dt, lambda);
             if (!gravityDamped) accel += gFree;
             // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
-            const bool still = (angVel.array() == 0).all() && (torques[id].array() == 0).all() && (inertia.array() > 0).all();
-            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(torques[id], inertia, blocked, 3);
+            const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
+            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
             const Vector3r angUndamped = angAccel;
             if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
@@ -154,10 +160,10 @@ void NewtonIntegrator::action() {
             diverged = std::max(diverged, id);
             continue;
         }
-        hot.vel[id] = vel;
-        hot.angVel[id] = angVel;
+        h.vel[id] = vel;
+        h.angVel[id] = angVel;
         statePos = pos;
-        mirror[id] = pos;
+        mir[id] = pos;
         if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
             e.grav += eGrav;
             e.kin += eKin;
@@ -169,16 +175,16 @@ void NewtonIntegrator::action() {
             Real sinHalf, cosHalf;
             sinCosHalf(angle, sinHalf, cosHalf);
             const Real k = sinHalf / angVelNorm;
-            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * hot.ori[id];
+            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
             // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
             // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
             // length from Python gets the exact division)
             const Real n2 = q.coeffs().squaredNorm();
-            hot.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
+            h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
         }
     }
     if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
-        for (long id = lo; id < hi; ++id) maxMoved2 = std::max(maxMoved2, (mirror[id] - reference[id]).squaredNorm());
+        for (long id = lo; id < hi; ++id) maxMoved2 = std::max(maxMoved2, (mir[id] - reference[id]).squaredNorm());
     };
     if (!(dt > crit.dt)) { // (the same answer in every thread)
         ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;
