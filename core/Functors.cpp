@@ -24,7 +24,7 @@ bool LawFunctor::go(IGeom&, IPhys&, Interaction&) { throw notImplemented(*this);
 void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* result) {
     const BodyContainer& bodies = scene->bodies;
     for (size_t j = 0; j < n; ++j) {
-        Interaction& i = *c[j].I;
+        Interaction& i = c[j].interaction();
         const Body& b1 = *bodies[i.id1];
         const Body& b2 = *bodies[i.id2];
         result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, Vector3r::Zero(), false, i);
@@ -33,7 +33,7 @@ void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* resul
 }
 
 void LawFunctor::goBatch(const Contact* c, size_t n, char* keep) {
-    for (size_t j = 0; j < n; ++j) keep[j] = go(*c[j].geom, *c[j].phys, *c[j].I);
+    for (size_t j = 0; j < n; ++j) keep[j] = go(*c[j].geom, *c[j].phys, c[j].interaction());
 }
 
 void BoundDispatcher::action() {

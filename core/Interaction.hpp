@@ -38,19 +38,23 @@ public:
 
 // One interaction as the batched functors see it (IGeomFunctorBatched, LawFunctorBatched): its
 // geometry and physics objects and the two ids, read from InteractionContainer's columns; the
-// Interaction itself is touched only to create or end the contact.
+// Interaction itself is touched only to create or end the contact (it is reached through its
+// entry in the container, read only then).
 struct Contact {
-    Interaction* I = nullptr;
+    Interaction* I = nullptr;                           // the interaction, or null: the one in *slot
+    const std::shared_ptr<Interaction>* slot = nullptr;
     IGeom* geom = nullptr;
     IPhys* phys = nullptr;
     Body::id_t id1 = -1, id2 = -1;
     bool isReal() const { return geom && phys; }
+    Interaction& interaction() const { return I ? *I : **slot; }
     explicit Contact(Interaction& i) : I(&i), geom(i.geom.get()), phys(i.phys.get()), id1(i.id1), id2(i.id2) {}
     Contact(Interaction* i, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : I(i), geom(g), phys(p), id1(a), id2(b) {}
+    Contact(const std::shared_ptr<Interaction>* s, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : slot(s), geom(g), phys(p), id1(a), id2(b) {}
     // A new geometry object of type G for this interaction (Ig2 functors, first contact).
     template <class G> G& makeGeom() {
         auto g = std::make_shared<G>();
-        I->geom = g;
+        interaction().geom = g;
         geom = g.get();
         return *g;
     }

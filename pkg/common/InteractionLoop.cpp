@@ -248,8 +248,9 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             missingIg2.emplace_back(shapes[ids[2 * k]], shapes[ids[2 * k + 1]]);
             continue;
         }
-        Interaction* I = intrs[(size_t)k].get();
+        const std::shared_ptr<Interaction>& slot = intrs[(size_t)k]; // (the entry's address: the object is not read)
         if (geomEntry.swap) { // the functor takes the shapes in the other order
+            Interaction* I = slot.get();
             I->swapOrder();
             ids[2 * k] = I->id1;
             ids[2 * k + 1] = I->id2;
@@ -261,7 +262,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         prefetchObject(o.phys);
         sc.oneGeomFunctor &= sc.entries.empty() || sc.entries[0].geom == geomEntry.functor;
         sc.entries.push_back(Scratch::Entry{k, geomEntry.functor, nullptr, 0});
-        sc.contacts.emplace_back(I, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
+        sc.contacts.emplace_back(&slot, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
     }
     const size_t n = sc.entries.size();
     if (n == 0) return;
@@ -304,7 +305,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             continue;
         }
         if (!c.phys) {
-            Interaction& I = *c.I;
+            Interaction& I = c.interaction();
             const Body& b1 = *bodies[I.id1];
             const Body& b2 = *bodies[I.id2];
             if (!b1.material || !b2.material) continue;
