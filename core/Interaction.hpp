@@ -48,6 +48,7 @@ struct Contact {
     Body::id_t id1 = -1, id2 = -1;
     bool isReal() const { return geom && phys; }
     Interaction& interaction() const { return I ? *I : **slot; }
+    Contact() = default;
     explicit Contact(Interaction& i) : I(&i), geom(i.geom.get()), phys(i.phys.get()), id1(i.id1), id2(i.id2) {}
     Contact(Interaction* i, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : I(i), geom(g), phys(p), id1(a), id2(b) {}
     Contact(const std::shared_ptr<Interaction>* s, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : slot(s), geom(g), phys(p), id1(a), id2(b) {}

@@ -227,8 +227,12 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     Body::id_t* ids = intrs.pairIds.data();
     InteractionContainer::Objects* objects = intrs.objects.data();
     Scratch& sc = *scratch[threadNumber()];
-    sc.entries.clear();
-    sc.contacts.clear();
+    // (written by index into arrays of batchEntries: a push_back per entry cost more than the rest of the gathering)
+    if (sc.entries.size() < batchEntries) {
+        sc.entries.resize(batchEntries);
+        sc.contacts.resize(batchEntries);
+    }
+    size_t n = 0;
     sc.oneGeomFunctor = true;
     // 1. the pairs to compute, and their Ig2 functor
     for (size_t j = j0; j < j1; ++j) {
@@ -260,11 +264,11 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         // start now, all at once, instead of one contact after the other
         prefetchObject(o.geom);
         prefetchObject(o.phys);
-        sc.oneGeomFunctor &= sc.entries.empty() || sc.entries[0].geom == geomEntry.functor;
-        sc.entries.push_back(Scratch::Entry{k, geomEntry.functor, nullptr, 0});
-        sc.contacts.emplace_back(&slot, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
+        sc.oneGeomFunctor &= n == 0 || sc.entries[0].geom == geomEntry.functor;
+        sc.entries[n] = Scratch::Entry{k, geomEntry.functor, nullptr, 0};
+        sc.contacts[n] = Contact(&slot, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
+        ++n;
     }
-    const size_t n = sc.entries.size();
     if (n == 0) return;
     // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
     const BodyColumns columns{s.bodies.hot().columns(), shapes, shapeCache.radius.data()};
@@ -335,8 +339,10 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             }
         }
         x.law = o.law;
-        sc.entries[live] = x;
-        sc.contacts[live] = c;
+        if (live != e) { // (compacted over the entries left out)
+            sc.entries[live] = x;
+            sc.contacts[live] = c;
+        }
         ++live;
     }
     // 4. forces: runs of one Law2 functor, in list order
@@ -434,25 +440,10 @@ void InteractionLoop::action() {
 #pragma omp barrier
     }
     const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
-    // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin)
-    // Entries j0 .. j1-1 of a list, batch by batch. Each contact's objects are far apart in
-    // memory: the interactions of the next batch are loaded while this one is computed (and their
-    // geometry and physics once gathered, in processBatch), so that the waits overlap.
+    // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin),
+    // batch by batch
     auto process = [&](int list, size_t j0, size_t j1) {
-        const std::vector<long>& pairs = threadPairs[list];
-        const unsigned* todo = work[list]->todo;
-        auto prefetchInteractions = [&](size_t a, size_t b) {
-            for (size_t j = a; j < b; ++j) {
-                const long k = pairs[todo ? todo[j] : j];
-                if (!quick || intrs.wasReal[k]) prefetchObject(intrs[(size_t)k].get(), 2); // (distant potential pairs are rejected without it)
-            }
-        };
-        prefetchInteractions(j0, std::min(j1, j0 + batchEntries));
-        for (size_t b0 = j0; b0 < j1; b0 += batchEntries) {
-            const size_t b1 = std::min(j1, b0 + batchEntries);
-            prefetchInteractions(b1, std::min(j1, b1 + batchEntries));
-            processBatch(list, b0, b1, quick, twiceD, missingIg2, error);
-        }
+        for (size_t b0 = j0; b0 < j1; b0 += batchEntries) processBatch(list, b0, std::min(j1, b0 + batchEntries), quick, twiceD, missingIg2, error);
     };
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
         // the entries to test: all, or with the skin those not certainly beyond reach since their
