@@ -28,8 +28,14 @@ BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
         throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
     if (!b->state) throw std::invalid_argument("cannot append a body whose state is None");
     b->id = static_cast<id_t>(bodies.size());
+    try {
+        attach(*b); // (may find the store full)
+    } catch (const std::length_error& e) {
+        b->store.reset();
+        b->id = -1;
+        throw std::length_error(std::string("cannot append to O.bodies: ") + e.what());
+    }
     bodies.push_back(b);
-    attach(*b);
     ++changes;
     return b->id;
 }

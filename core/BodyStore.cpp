@@ -1,9 +1,15 @@
 #include <core/BodyStore.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 namespace yade {
 
 void BodyStore::resize(size_t n) {
+    size_t most = pos.maxSize();
+    for (size_t m : {vel.maxSize(), angVel.maxSize(), inertia.maxSize(), ori.maxSize(), mass.maxSize(), blockedDOFsMask.maxSize(),
+                 mask.maxSize(), isDamped.maxSize(), exists.maxSize(), radius.maxSize()})
+        most = std::min(most, m);
+    if (n > most) throw std::length_error("more than " + std::to_string(most) + " bodies (the address space reserved for them)");
     const BodyHot hole;
     pos.resize(n, hole.pos);
     vel.resize(n, hole.vel);

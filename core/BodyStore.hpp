@@ -36,8 +36,9 @@ struct Kinematics {
 
 class BodyStore {
 public:
-    // Address space for this many bodies is reserved (only the used part is memory).
-    static constexpr size_t maxBodies = size_t(1) << 25;
+    // Address space for this many bodies is reserved (only the used part is memory; less where
+    // the address space is limited, see StableArray).
+    static constexpr size_t maxBodies = size_t(1) << 22;
     StableArray<Vector3r> pos{maxBodies}, vel{maxBodies}, angVel{maxBodies}, inertia{maxBodies};
     StableArray<Quaternionr> ori{maxBodies};
     StableArray<Real> mass{maxBodies};

@@ -23,10 +23,15 @@ public:
     // Each array starts a different number of cache lines into its first page: arrays that all
     // start on a page boundary map entry i of every column to the same cache set, and a loop over
     // a dozen columns then evicts its own lines (the caches have 8 to 16 ways).
+    // Where the address space is limited (ulimit -v), the reservation is halved until it fits.
     explicit StableArray(size_t maxElements) : capacity(maxElements) {
         static std::atomic<unsigned> arrays{0};
         offset = 64 * ((arrays++ * 23) % 64);
-        void* p = mmap(nullptr, bytes() + offset, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        void* p = MAP_FAILED;
+        for (; capacity >= 4096; capacity /= 2) {
+            p = mmap(nullptr, bytes() + offset, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+            if (p != MAP_FAILED) break;
+        }
         if (p == MAP_FAILED) throw std::bad_alloc();
         base = static_cast<char*>(p);
         items = reinterpret_cast<T*>(base + offset);
@@ -43,7 +48,7 @@ public:
     const T& operator[](size_t i) const { return items[i]; }
     // New elements get `fill`; shrinking keeps the memory (the addresses stay valid).
     void resize(size_t n, const T& fill = T()) {
-        if (n > capacity) throw std::length_error("StableArray: more than " + std::to_string(capacity) + " elements");
+        if (n > capacity) throw std::length_error("more than " + std::to_string(capacity) + " entries (the address space reserved for them)");
         if (offset + n * sizeof(T) > usable) { // in steps of 1 MiB
             const size_t want = std::min(bytes() + offset, (offset + n * sizeof(T) + step - 1) / step * step);
             if (mprotect(base, want, PROT_READ | PROT_WRITE) != 0) throw std::bad_alloc();
