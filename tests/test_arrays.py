@@ -172,3 +172,41 @@ def test_a_file_saved_before_the_body_store_loads_and_runs_the_same(name):
     assert np.allclose(a.pos, expected["pos"], rtol=1e-12, atol=1e-15)
     assert np.allclose(a.vel, expected["vel"], rtol=1e-10, atol=1e-13)
     assert np.allclose([list(b.state.ori) for b in O.bodies], expected["ori"], rtol=1e-12, atol=1e-15)
+
+
+# ------------------------------------------------------------------ the interaction columns
+
+def pair(overlap=1e-4):
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((0, 0, 0), R), sphere((2 * R - overlap, 0, 0), R)])
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                           [Law2_ScGeom_FrictPhys_CundallStrack()])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]), loop, NewtonIntegrator()]
+    O.dt = 1e-7
+    O.step()
+    return loop
+
+
+def test_a_phys_assigned_from_python_is_the_one_the_law_uses():
+    pair()
+    i = O.interactions[0, 1]
+    kn = i.phys.kn
+    fn = O.forces.f(0).norm()
+    i.phys = FrictPhys(kn=2 * kn, ks=i.phys.ks, tangensOfFrictionAngle=i.phys.tangensOfFrictionAngle)
+    O.step()
+    assert O.interactions[0, 1].phys.kn == 2 * kn
+    depth = O.interactions[0, 1].geom.penetrationDepth
+    assert O.forces.f(0).norm() == pytest.approx(2 * kn * depth, rel=1e-9)
+    assert O.forces.f(0).norm() > 1.9 * fn
+
+
+def test_new_law_functors_replace_the_ones_chosen_before():
+    loop = pair()
+    O.step()
+    assert O.interactions.countReal() == 1
+    O.bodies[1].state.vel = (100, 0, 0)                  # away, fast: the contact ends at the next steps
+    loop.lawDispatcher.functors = [Law2_ScGeom_FrictPhys_CundallStrack(neverErase=True)]
+    O.run(20, True)
+    i = O.interactions[0, 1]
+    assert i.isReal and i.geom.penetrationDepth < 0     # kept by the new functor (the old one would erase it)
+    assert tuple(i.phys.normalForce) == (0, 0, 0)
