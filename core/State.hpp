@@ -1,6 +1,6 @@
 // Kinematic state of a body: position, orientation, velocities, mass (1.2.1). The hot part
-// (BodyHot) lives in the scene's BodyStore while the body is in a scene: this object is then a
-// view of the record of its body's id (hot()), and its attributes read and write the record.
+// (BodyHot) lives in the scene's BodyStore columns while the body is in a scene: this object is
+// then a view of its body's entries, and its attributes read and write them.
 #pragma once
 #include <core/BodyStore.hpp>
 #include <lib/factory/ClassRegistry.hpp>
@@ -17,18 +17,22 @@ public:
     State& operator=(const State&) = delete;
 
     // Each accessor reads the store's column while bound to a body of a scene, else this object's copy.
-#define YADE_STATE_FIELD(T, name) \
-    T& name() { return slot >= 0 ? store->name[(size_t)slot] : local.name; } \
-    const T& name() const { return slot >= 0 ? store->name[(size_t)slot] : local.name; }
-    YADE_STATE_FIELD(Vector3r, pos)
-    YADE_STATE_FIELD(Vector3r, vel)
-    YADE_STATE_FIELD(Vector3r, angVel)
-    YADE_STATE_FIELD(Quaternionr, ori)
-    YADE_STATE_FIELD(Real, mass)
-    YADE_STATE_FIELD(Vector3r, inertia)
-    YADE_STATE_FIELD(int, blockedDOFsMask)
-    YADE_STATE_FIELD(bool, isDamped)
-#undef YADE_STATE_FIELD
+    Vector3r& pos() { return field(&BodyStore::pos, &BodyHot::pos); }
+    const Vector3r& pos() const { return field(&BodyStore::pos, &BodyHot::pos); }
+    Vector3r& vel() { return field(&BodyStore::vel, &BodyHot::vel); }
+    const Vector3r& vel() const { return field(&BodyStore::vel, &BodyHot::vel); }
+    Vector3r& angVel() { return field(&BodyStore::angVel, &BodyHot::angVel); }
+    const Vector3r& angVel() const { return field(&BodyStore::angVel, &BodyHot::angVel); }
+    Quaternionr& ori() { return field(&BodyStore::ori, &BodyHot::ori); }
+    const Quaternionr& ori() const { return field(&BodyStore::ori, &BodyHot::ori); }
+    Real& mass() { return field(&BodyStore::mass, &BodyHot::mass); }
+    Real mass() const { return field(&BodyStore::mass, &BodyHot::mass); }
+    Vector3r& inertia() { return field(&BodyStore::inertia, &BodyHot::inertia); }
+    const Vector3r& inertia() const { return field(&BodyStore::inertia, &BodyHot::inertia); }
+    int& blockedDOFsMask() { return field(&BodyStore::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
+    int blockedDOFsMask() const { return field(&BodyStore::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
+    bool& isDamped() { return field(&BodyStore::isDamped, &BodyHot::isDamped); }
+    bool isDamped() const { return field(&BodyStore::isDamped, &BodyHot::isDamped); }
     // The whole record (a copy), and what the contact functors read.
     BodyHot hot() const { return slot >= 0 ? store->get((size_t)slot) : local; }
     Kinematics kinematics() const { return Kinematics{pos(), vel(), angVel(), ori()}; }
@@ -77,6 +81,12 @@ public:
 private:
     std::shared_ptr<BodyStore> store;
     long slot = -1;
+    template <class T> T& field(StableArray<T> BodyStore::*column, T BodyHot::*member) {
+        return slot >= 0 ? (store.get()->*column)[(size_t)slot] : local.*member;
+    }
+    template <class T> const T& field(StableArray<T> BodyStore::*column, T BodyHot::*member) const {
+        return slot >= 0 ? (store.get()->*column)[(size_t)slot] : local.*member;
+    }
 };
 
 } // namespace yade
