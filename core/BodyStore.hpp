@@ -44,7 +44,8 @@ public:
     StableArray<Real> mass{maxBodies};
     StableArray<int> blockedDOFsMask{maxBodies}, mask{maxBodies};
     StableArray<bool> isDamped{maxBodies}, exists{maxBodies};
-    // Sphere radii (NaN: not a sphere), filled by the interaction loop and by NumPy views.
+    // Sphere radii (NaN: not a sphere), refreshed from the shapes when a NumPy view is taken (the
+    // interaction loop keeps its own cache, which also marks facets).
     StableArray<Real> radius{maxBodies};
     // NumPy views of pos that may be written: while there are any, cached positions are not trusted.
     std::atomic<int> writableViews{0};

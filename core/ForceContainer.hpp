@@ -51,8 +51,6 @@ public:
     // The totals (call sync() first), for loops over all bodies.
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }
-    Vector3r* forceData() { return force.data(); }
-    Vector3r* torqueData() { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     bool hasPermanent() const { return anyPermanent; }
     // One body's share of an add: a force, a torque or both.

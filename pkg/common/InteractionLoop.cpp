@@ -203,11 +203,11 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     ++threadPairsBuild;
 }
 
-// Starts loading the first cache lines of an object (none: null).
-static inline void prefetchObject(const void* p, int lines = 3) {
+// Starts loading the first three cache lines of an object (none: null).
+static inline void prefetchObject(const void* p) {
     if (!p) return;
     const char* c = static_cast<const char*>(p);
-    for (int l = 0; l < lines; ++l) __builtin_prefetch(c + 64 * l);
+    for (int l = 0; l < 3; ++l) __builtin_prefetch(c + 64 * l);
 }
 
 // Entries j0 .. j1-1 of thread list `list` (at most batchEntries): quick rejects, then the Ig2

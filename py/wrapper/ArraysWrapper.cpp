@@ -71,8 +71,8 @@ BodyArrays bodyArrays() {
     r.arrays["ori"] = view(st.ori.data(), n, 4, true, readOnly);
     r.arrays["mass"] = view(st.mass.data(), n, 0, true, readOnly);
     r.arrays["inertia"] = view(st.inertia.data(), n, 3, true, readOnly);
-    r.arrays["force"] = view(s->forces.forceData(), n, 3, false, readOnly);
-    r.arrays["torque"] = view(s->forces.torqueData(), n, 3, false, readOnly);
+    r.arrays["force"] = view(const_cast<Vector3r*>(s->forces.forceData()), n, 3, false, readOnly); // (read-only views)
+    r.arrays["torque"] = view(const_cast<Vector3r*>(s->forces.torqueData()), n, 3, false, readOnly);
     r.arrays["radius"] = view(st.radius.data(), n, 0, false, readOnly);
     r.arrays["exists"] = view(st.exists.data(), n, 0, false, readOnly);
     return r;
