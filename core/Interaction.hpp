@@ -14,7 +14,6 @@ public:
     Vector3i cellDist = Vector3i::Zero();
     std::shared_ptr<IGeom> geom;
     std::shared_ptr<IPhys> phys;
-    size_t linIndex = 0;      // position in InteractionContainer
     template <class V> void visit(V& v) {
         Serializable::visit(v);
         v.attr("id1", id1, "Id of the first body", Attr::readonly);
@@ -38,20 +37,23 @@ public:
 
 // One interaction as the batched functors see it (IGeomFunctorBatched, LawFunctorBatched): its
 // geometry and physics objects and the two ids, read from InteractionContainer's columns; the
-// Interaction itself is touched only to create or end the contact (it is reached through its
-// entry in the container, read only then).
+// Interaction object itself is touched only to create or end the contact (a potential pair may
+// have none yet: interaction() makes it).
+class InteractionContainer;
 struct Contact {
-    Interaction* I = nullptr;                           // the interaction, or null: the one in *slot
-    const std::shared_ptr<Interaction>* slot = nullptr;
+    Interaction* I = nullptr;               // the interaction, or null: entry k of *owner
+    InteractionContainer* owner = nullptr;
+    long k = -1;
     IGeom* geom = nullptr;
     IPhys* phys = nullptr;
     Body::id_t id1 = -1, id2 = -1;
     bool isReal() const { return geom && phys; }
-    Interaction& interaction() const { return I ? *I : **slot; }
+    Interaction& interaction() const; // (InteractionContainer.cpp)
     Contact() = default;
     explicit Contact(Interaction& i) : I(&i), geom(i.geom.get()), phys(i.phys.get()), id1(i.id1), id2(i.id2) {}
     Contact(Interaction* i, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : I(i), geom(g), phys(p), id1(a), id2(b) {}
-    Contact(const std::shared_ptr<Interaction>* s, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b) : slot(s), geom(g), phys(p), id1(a), id2(b) {}
+    Contact(InteractionContainer* c, long entry, IGeom* g, IPhys* p, Body::id_t a, Body::id_t b)
+        : owner(c), k(entry), geom(g), phys(p), id1(a), id2(b) {}
     // A new geometry object of type G for this interaction (Ig2 functors, first contact).
     template <class G> G& makeGeom() {
         auto g = std::make_shared<G>();

@@ -95,9 +95,9 @@ bool InsertionSortCollider::overlappedBefore(Body::id_t a, Body::id_t b) const {
 void InsertionSortCollider::handleInversion(Body::id_t a, Body::id_t b) {
     const bool overlap = overlapNow(a, b);
     InteractionContainer& intrs = scene->interactions;
-    const auto& I = intrs.find(a, b);
-    if (overlap && !I) intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
-    else if (!overlap && I && !I->isReal()) intrs.erase(a, b);
+    const long k = intrs.findIndex(a, b);
+    if (overlap && k < 0) intrs.insertPotential(std::min(a, b), std::max(a, b));
+    else if (!overlap && k >= 0 && !intrs.isReal((size_t)k)) intrs.eraseAt((size_t)k);
 }
 
 // Insertion sort (3.1.3): each element moves left past the larger ones; passing a bound of the
@@ -139,10 +139,11 @@ void InsertionSortCollider::rebuild() {
     InteractionContainer& intrs = scene->interactions;
     // Drop potential interactions whose bounds are apart (or whose bodies lost their bounds).
     std::vector<std::pair<Body::id_t, Body::id_t>> stale;
-    for (const auto& I : intrs) {
-        if (I->isReal()) continue;
-        const auto &A = bodies.exists(I->id1) ? bodies[I->id1] : nullptr, &B = bodies.exists(I->id2) ? bodies[I->id2] : nullptr;
-        if (!collidable(A) || !collidable(B) || !Body::mayCollide(*A, *B) || !boundsOverlap(*A, *B)) stale.emplace_back(I->id1, I->id2);
+    for (size_t k = 0; k < intrs.size(); ++k) {
+        if (intrs.isReal(k)) continue;
+        const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
+        const auto &A = bodies.exists(a) ? bodies[a] : nullptr, &B = bodies.exists(b) ? bodies[b] : nullptr;
+        if (!collidable(A) || !collidable(B) || !Body::mayCollide(*A, *B) || !boundsOverlap(*A, *B)) stale.emplace_back(a, b);
     }
     for (const auto& p : stale) intrs.erase(p.first, p.second);
     // Sweep along x: every body whose lower bound lies inside [min, max] of another may overlap it.
@@ -153,8 +154,8 @@ void InsertionSortCollider::rebuild() {
         for (size_t j = i + 1; j < xs.size() && !(xs[j].id == a && !xs[j].isMin); ++j) {
             if (!xs[j].isMin) continue;
             const Body::id_t b = xs[j].id;
-            if (Body::mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && !intrs.find(a, b))
-                intrs.insert(std::make_shared<Interaction>(std::min(a, b), std::max(a, b)));
+            if (Body::mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && intrs.findIndex(a, b) < 0)
+                intrs.insertPotential(std::min(a, b), std::max(a, b));
         }
     }
 }

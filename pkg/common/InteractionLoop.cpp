@@ -252,12 +252,9 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             missingIg2.emplace_back(shapes[ids[2 * k]], shapes[ids[2 * k + 1]]);
             continue;
         }
-        const std::shared_ptr<Interaction>& slot = intrs[(size_t)k]; // (the entry's address: the object is not read)
         if (geomEntry.swap) { // the functor takes the shapes in the other order
-            Interaction* I = slot.get();
-            I->swapOrder();
-            ids[2 * k] = I->id1;
-            ids[2 * k + 1] = I->id2;
+            if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
+            std::swap(ids[2 * k], ids[2 * k + 1]);
         }
         const InteractionContainer::Objects& o = objects[k];
         // the functors read the contact's objects once the whole batch is gathered: their loads
@@ -266,7 +263,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         prefetchObject(o.phys);
         sc.oneGeomFunctor &= n == 0 || sc.entries[0].geom == geomEntry.functor;
         sc.entries[n] = Scratch::Entry{k, geomEntry.functor, nullptr, 0};
-        sc.contacts[n] = Contact(&slot, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
+        sc.contacts[n] = Contact(&intrs, k, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
         ++n;
     }
     if (n == 0) return;
@@ -304,7 +301,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         InteractionContainer::Objects& o = objects[x.k];
         if (o.geom != c.geom) o.geom = c.geom; // a new one
         if (!x.real) {
-            if (c.isReal()) endContact(intrs, x.k); // the geometry says the contact is over
+            if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
             setWasReal(intrs, x.k, false);
             continue;
         }
@@ -354,17 +351,11 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         f->goBatch(sc.contacts.data() + first, last - first, sc.flags.data());
         for (size_t e = first; e < last; ++e) {
             const bool keep = sc.flags[e - first];
-            if (!keep) endContact(intrs, sc.entries[e].k); // back to a potential interaction
+            if (!keep) intrs.endContact((size_t)sc.entries[e].k); // back to a potential interaction
             setWasReal(intrs, sc.entries[e].k, keep);
         }
         first = last;
     }
-}
-
-// Back to a potential interaction, in the object and the columns.
-void InteractionLoop::endContact(InteractionContainer& intrs, long k) {
-    intrs[(size_t)k]->reset();
-    intrs.objects[k] = InteractionContainer::Objects();
 }
 
 void InteractionLoop::action() {

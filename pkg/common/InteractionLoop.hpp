@@ -143,7 +143,6 @@ private:
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
             std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error);
-    static void endContact(InteractionContainer& intrs, long k);
     static int threadNumber() {
 #ifdef _OPENMP
         return omp_get_thread_num();

@@ -48,8 +48,8 @@ void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best) {
     if (!scene.bodies.exists(id) || !scene.bodies[id]->isDynamic()) return; // (lowest() would find nothing: a facet's many partners are not read)
     Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
     for (const auto& partner : scene.interactions.partnersOf(id)) {
-        const Interaction* I = partner.second;
-        if (I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
+        const Interaction* I = scene.interactions.object(partner.k);
+        if (I && I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
             kt += ct;
             kr += cr;
         }
@@ -70,8 +70,8 @@ CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem) {
     const InteractionContainer& intrs = scene.interactions;
     for (size_t k = 0; k < intrs.size(); ++k) {
         if (asLastLoopSawThem && !intrs.wasReal[k]) continue; // (a contiguous flag: most pairs are not touched)
-        const Interaction& I = *intrs[k];
-        if (!I.isReal()) continue;
+        if (!intrs.isReal(k)) continue;
+        const Interaction& I = *intrs.object(k);
         for (int side = 1; side <= 2; ++side)
             if (contribution(I, side, ct, cr)) {
                 const Body::id_t id = side == 1 ? I.id1 : I.id2;

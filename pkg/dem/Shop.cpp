@@ -41,8 +41,9 @@ Real Shop::unbalancedForce(Scene& scene, bool useMaxForce) {
     }
     Real sumContact = 0;
     long nContacts = 0;
-    for (const auto& I : scene.interactions) {
-        if (!I->isReal()) continue;
+    for (size_t k = 0; k < scene.interactions.size(); ++k) {
+        const Interaction* I = scene.interactions.object(k);
+        if (!I || !I->isReal()) continue;
         if (const auto* p = dynamic_cast<const NormShearPhys*>(I->phys.get())) {
             sumContact += (p->normalForce + p->shearForce).norm();
             ++nContacts;

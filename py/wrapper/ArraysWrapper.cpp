@@ -84,8 +84,9 @@ py::dict interactionArrays() {
     std::vector<int> id1, id2;
     std::vector<Vector3r> fn, fs, normal, point;
     std::vector<Real> depth;
-    for (const auto& I : s.interactions) {
-        if (!I->isReal()) continue;
+    for (size_t k = 0; k < s.interactions.size(); ++k) {
+        const Interaction* I = s.interactions.object(k);
+        if (!I || !I->isReal()) continue;
         const auto* g = dynamic_cast<const ScGeom*>(I->geom.get());
         const auto* p = dynamic_cast<const NormShearPhys*>(I->phys.get());
         if (!g || !p) continue;

@@ -105,6 +105,13 @@ struct BodyContainerProxy {
     }
 };
 
+// Iteration over O.interactions: the real interactions when the iteration began, one Python
+// object at a time (a list of them all cost as much memory as the contacts themselves).
+struct RealInteractionIterator {
+    std::vector<std::shared_ptr<Interaction>> items;
+    size_t next = 0;
+};
+
 struct InteractionContainerProxy {
     py::object get(py::tuple ids) {
         if (ids.size() != 2) throw py::type_error("O.interactions[id1,id2] takes two body ids");
@@ -113,14 +120,16 @@ struct InteractionContainerProxy {
         return py::cast(I);
     }
     bool has(int a, int b, bool onlyReal) {
-        const auto& I = scene().interactions.find(a, b);
-        return I && (!onlyReal || I->isReal());
+        const InteractionContainer& intrs = scene().interactions;
+        const long k = intrs.findIndex(a, b);
+        return k >= 0 && (!onlyReal || intrs.isReal((size_t)k));
     }
     size_t len() { return scene().interactions.size(); }
     py::list all(bool onlyReal) {
         py::list l;
-        for (const auto& I : scene().interactions)
-            if (!onlyReal || I->isReal()) l.append(py::cast(I));
+        const InteractionContainer& intrs = scene().interactions;
+        for (size_t k = 0; k < intrs.size(); ++k)
+            if (!onlyReal || intrs.isReal(k)) l.append(py::cast(intrs[k]));
         return l;
     }
     py::list withBody(int id) {
@@ -255,10 +264,24 @@ void bindOmega(py::module_& m) {
             .def("__iter__", &BodyContainerProxy::iter)
             .def("erase", &BodyContainerProxy::erase, py::arg("id"), "Remove a body and its interactions")
             .def("clear", &BodyContainerProxy::clear, "Remove all bodies and interactions");
+    py::class_<RealInteractionIterator>(m, "InteractionIterator", "Iterator over the real interactions of O.interactions")
+            .def("__iter__", [](RealInteractionIterator& it) -> RealInteractionIterator& { return it; }, py::return_value_policy::reference_internal)
+            .def("__next__", [](RealInteractionIterator& it) {
+                if (it.next >= it.items.size()) throw py::stop_iteration();
+                return std::move(it.items[it.next++]);
+            });
     py::class_<InteractionContainerProxy>(m, "InteractionContainer", "O.interactions: interactions indexed by a pair of ids")
             .def("__getitem__", &InteractionContainerProxy::get)
             .def("__len__", &InteractionContainerProxy::len)
-            .def("__iter__", [](InteractionContainerProxy& p) { return py::iter(p.all(true)); }, "Iterate over real interactions")
+            .def("__iter__",
+                    [](InteractionContainerProxy&) {
+                        const InteractionContainer& intrs = scene().interactions;
+                        RealInteractionIterator it;
+                        for (size_t k = 0; k < intrs.size(); ++k)
+                            if (intrs.isReal(k)) it.items.push_back(intrs[k]);
+                        return it;
+                    },
+                    "Iterate over real interactions")
             .def("has", &InteractionContainerProxy::has, py::arg("id1"), py::arg("id2"), py::arg("onlyReal") = false)
             .def("all", &InteractionContainerProxy::all, py::arg("onlyReal") = false)
             .def("withBody", &InteractionContainerProxy::withBody, py::arg("id"), "Real interactions of body #id")

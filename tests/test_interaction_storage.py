@@ -1,0 +1,136 @@
+"""How O.interactions stores pairs (doc/storage.md): a potential pair (bounds overlap, no contact)
+is an entry of the container's columns, with an Interaction object only once Python or a functor
+asks for one; what Python sees is the same as if every pair had its object."""
+import pytest
+
+from yade import *  # noqa: F401,F403
+from yade import O
+from yade.utils import sphere
+
+
+@pytest.fixture(autouse=True)
+def fresh_scene():
+    O.pause()
+    O.reset()
+    yield
+    O.pause()
+
+
+def engines():
+    return [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+            InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                            [Law2_ScGeom_FrictPhys_CundallStrack()]),
+            NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
+
+
+def three_spheres():
+    """#0 and #1 touch (a contact); #1 and #2 have overlapping bounds, 0.1 mm apart (a potential
+    pair); #0 and #2 are far apart."""
+    O.bodies.append([sphere((0, 0, 0), 1e-3), sphere((1.99e-3, 0, 0), 1e-3), sphere((4.09e-3, 0, 0), 1e-3)])
+    for b in O.bodies:
+        b.state.blockedDOFs = 'xyzXY'  # moved only by the velocities the tests give them (still dynamic)
+    O.engines = engines()
+    O.dt = 1e-6
+    O.step()
+
+
+def test_potential_pair_is_counted_and_found_without_being_real():
+    three_spheres()
+    assert len(O.interactions) == 2
+    assert O.interactions.countReal() == 1
+    assert O.interactions.has(1, 2) and not O.interactions.has(1, 2, onlyReal=True)
+    assert O.interactions.has(2, 1)
+    assert not O.interactions.has(0, 2)
+    assert [(i.id1, i.id2) for i in O.interactions] == [(0, 1)]
+
+
+def test_potential_pair_object_is_made_on_request_and_kept():
+    three_spheres()
+    i = O.interactions[2, 1]
+    assert (min(i.id1, i.id2), max(i.id1, i.id2)) == (1, 2)
+    assert not i.isReal and i.geom is None and i.phys is None and i.iterMadeReal == -1
+    assert O.interactions[1, 2] is i  # the same object from then on
+    assert sorted((min(x.id1, x.id2), max(x.id1, x.id2)) for x in O.interactions.all()) == [(0, 1), (1, 2)]
+    O.step()
+    assert O.interactions[1, 2] is i and not i.isReal
+
+
+def test_a_held_potential_pair_becomes_the_contact():
+    three_spheres()
+    held = O.interactions[1, 2]
+    O.bodies[2].state.vel = (-1, 0, 0)  # closes the 0.1 mm gap in 100 steps
+    O.run(200, True)
+    assert O.interactions[1, 2] is held and held.isReal
+    assert held.phys.normalForce.norm() > 0
+
+
+def test_ended_contact_held_by_python_is_reset_and_a_new_one_made_later():
+    three_spheres()
+    contact = O.interactions[0, 1]
+    assert contact.isReal
+    O.bodies[1].state.vel = (1, 0, 0)  # separates #0 and #1 (and closes on #2)
+    O.run(100, True)
+    assert not contact.isReal and contact.geom is None and contact.phys is None and contact.iterMadeReal == -1
+    if O.interactions.has(0, 1):
+        assert O.interactions[0, 1] is contact
+    O.bodies[1].state.vel = (-1, 0, 0)
+    O.run(200, True)
+    assert O.interactions[0, 1].isReal
+
+
+def test_contact_that_ends_and_starts_again_gives_the_same_forces_as_a_fresh_one():
+    # an ended contact's object is dropped when nobody holds it; the next contact starts from
+    # zero shear, as a new one
+    three_spheres()
+    O.bodies[1].state.vel = (1, 0, 0)
+    O.run(150, True)
+    assert not O.interactions.has(0, 1, onlyReal=True)
+    O.bodies[1].state.vel = (-1, 0, 0)
+    O.run(250, True)
+    i = O.interactions[0, 1]
+    assert i.isReal and i.phys.shearForce.norm() == 0
+    assert i.iterMadeReal > 150
+
+
+def test_erased_potential_pair_is_gone_and_erase_of_a_missing_one_raises():
+    three_spheres()
+    O.interactions.erase(2, 1)
+    assert not O.interactions.has(1, 2) and len(O.interactions) == 1
+    with pytest.raises(IndexError):
+        O.interactions.erase(1, 2)
+    with pytest.raises(IndexError):
+        O.interactions[1, 2]
+    assert O.interactions[0, 1].isReal  # the entry that moved into the hole is still found
+
+
+def test_erasing_a_body_drops_its_pairs_and_keeps_the_others_findable():
+    O.bodies.append([sphere((x * 1.99e-3, 0, 0), 1e-3) for x in range(6)])
+    O.engines = engines()
+    O.dt = 1e-6
+    O.step()
+    assert O.interactions.countReal() == 5
+    O.bodies.erase(2)
+    assert O.interactions.countReal() == 3
+    for a, b in [(0, 1), (3, 4), (4, 5)]:
+        assert O.interactions[b, a].isReal
+    assert not O.interactions.has(1, 2) and not O.interactions.has(2, 3)
+
+
+def test_save_and_load_keep_potential_pairs(tmp_path):
+    three_spheres()
+    f = str(tmp_path / 'scene.yade.gz')
+    O.save(f)
+    O.reset()
+    O.load(f)
+    assert len(O.interactions) == 2 and O.interactions.countReal() == 1
+    assert O.interactions.has(1, 2) and not O.interactions[1, 2].isReal
+
+
+def test_iteration_holds_the_contacts_it_will_yield():
+    three_spheres()
+    it = iter(O.interactions)
+    O.interactions.clear()
+    i = next(it)
+    assert (i.id1, i.id2) == (0, 1) and i.isReal
+    with pytest.raises(StopIteration):
+        next(it)
