@@ -222,6 +222,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const std::vector<long>& pairs = threadPairs[list];
     Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
+    const bool fuse = fusedPasses;
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
     Body::id_t* ids = intrs.pairIds.data();
@@ -234,6 +235,9 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     }
     size_t n = 0;
     sc.oneGeomFunctor = true;
+    // the dispatch entry of the last shape-class pair (consecutive pairs are mostly of one kind)
+    int lastC1 = -1, lastC2 = -1;
+    const DispatchTable2D<IGeomFunctor>::Entry* lastEntry = nullptr;
     // 1. the pairs to compute, and their Ig2 functor
     for (size_t j = j0; j < j1; ++j) {
         const size_t i = todo ? todo[j] : j;
@@ -246,7 +250,12 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         if (gaps) gaps[i] = -Inf; // tested again at the next step
         const int c1 = shapeIndex[ids[2 * k]], c2 = shapeIndex[ids[2 * k + 1]];
         if (c1 < 0 || c2 < 0) continue; // a body without shape
-        const auto& geomEntry = geomDispatcher->getFunctor(c1, c2);
+        if (c1 != lastC1 || c2 != lastC2) {
+            lastEntry = &geomDispatcher->getFunctor(c1, c2);
+            lastC1 = c1;
+            lastC2 = c2;
+        }
+        const auto& geomEntry = *lastEntry;
         if (!geomEntry.functor) {
 #pragma omp critical(yadeMissing)
             missingIg2.emplace_back(shapes[ids[2 * k]], shapes[ids[2 * k + 1]]);
@@ -261,8 +270,18 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         // start now, all at once, instead of one contact after the other
         prefetchObject(o.geom);
         prefetchObject(o.phys);
-        sc.oneGeomFunctor &= n == 0 || sc.entries[0].geom == geomEntry.functor;
-        sc.entries[n] = Scratch::Entry{k, geomEntry.functor, nullptr, 0};
+        // an existing contact whose Ig2 and Law2 functors have a fused pass: both run in step 4
+        IGeomFunctor* fused = nullptr;
+        if (o.law && o.geom && o.phys) {
+            if (sc.fuseGeom != geomEntry.functor || sc.fuseLaw != o.law) {
+                sc.fuseGeom = geomEntry.functor;
+                sc.fuseLaw = o.law;
+                sc.fuses = fuse && geomEntry.functor->fusesWith(*o.law);
+            }
+            if (sc.fuses) fused = geomEntry.functor;
+        }
+        sc.oneGeomFunctor &= !fused && (n == 0 || sc.entries[0].geom == geomEntry.functor);
+        sc.entries[n] = fused ? Scratch::Entry{k, nullptr, o.law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
         sc.contacts[n] = Contact(&intrs, k, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
         ++n;
     }
@@ -276,7 +295,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     } else {
         for (size_t first = 0; first < n; ++first) {
             IGeomFunctor* f = sc.entries[first].geom;
-            if (!f) continue; // done
+            if (!f) continue; // done (or fused)
             sc.batch.clear();
             sc.where.clear();
             for (size_t e = first; e < n; ++e)
@@ -298,6 +317,14 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     for (size_t e = 0; e < n; ++e) {
         Scratch::Entry& x = sc.entries[e];
         Contact& c = sc.contacts[e];
+        if (x.fused) { // (a contact with its functors: nothing to do before step 4)
+            if (live != e) {
+                sc.entries[live] = x;
+                sc.contacts[live] = c;
+            }
+            ++live;
+            continue;
+        }
         InteractionContainer::Objects& o = objects[x.k];
         if (o.geom != c.geom) o.geom = c.geom; // a new one
         if (!x.real) {
@@ -342,13 +369,15 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         }
         ++live;
     }
-    // 4. forces: runs of one Law2 functor, in list order
+    // 4. forces: runs of one Law2 functor (fused with its Ig2 functor or not), in list order
     for (size_t first = 0; first < live;) {
         LawFunctor* f = sc.entries[first].law;
+        IGeomFunctor* fused = sc.entries[first].fused;
         size_t last = first;
-        while (last < live && sc.entries[last].law == f) ++last;
+        while (last < live && sc.entries[last].law == f && sc.entries[last].fused == fused) ++last;
         sc.flags.resize(last - first);
-        f->goBatch(sc.contacts.data() + first, last - first, sc.flags.data());
+        if (fused) fused->goBatchWithLaw(columns, sc.contacts.data() + first, last - first, *f, sc.flags.data());
+        else f->goBatch(sc.contacts.data() + first, last - first, sc.flags.data());
         for (size_t e = first; e < last; ++e) {
             const bool keep = sc.flags[e - first];
             if (!keep) intrs.endContact((size_t)sc.entries[e].k); // back to a potential interaction

@@ -23,11 +23,13 @@ public:
     std::shared_ptr<IPhysDispatcher> physDispatcher = std::make_shared<IPhysDispatcher>();
     std::shared_ptr<LawDispatcher> lawDispatcher = std::make_shared<LawDispatcher>();
     bool fastPath = true;
+    bool fusedPasses = true;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
+        v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
     }
     void action() override;
@@ -131,6 +133,7 @@ private:
             long k;             // position in O.interactions
             IGeomFunctor* geom; // its Ig2 functor (null once computed)
             LawFunctor* law;    // its Law2 functor
+            IGeomFunctor* fused; // an existing contact whose Ig2 functor runs with its Law2 functor in one pass (else null)
             char real;          // the Ig2 functor's answer
         };
         std::vector<Entry> entries;
@@ -138,7 +141,11 @@ private:
         std::vector<Contact> batch;
         std::vector<size_t> where;
         std::vector<char> flags;
-        bool oneGeomFunctor = true; // every entry has the same Ig2 functor
+        bool oneGeomFunctor = true; // every entry has the same Ig2 functor (and none is fused)
+        // whether an Ig2 functor fuses with a Law2 functor (IGeomFunctor::fusesWith), for the last pair asked
+        const IGeomFunctor* fuseGeom = nullptr;
+        const LawFunctor* fuseLaw = nullptr;
+        bool fuses = false;
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
