@@ -39,6 +39,11 @@ public:
         put(th, {id1, Contribution::both, f1, t1});
         put(th, {id2, Contribution::both, -f1, t2});
     }
+    // With one thread and nothing captured every add goes in place: a contact loop may then take
+    // the totals once and add to them itself (calling markAdded() once); null otherwise (use addContact).
+    Vector3r* inPlaceForces() { return remote.size() == 1 && !remote[0].capture ? force.data() : nullptr; }
+    Vector3r* inPlaceTorques() { return remote.size() == 1 && !remote[0].capture ? torque.data() : nullptr; }
+    void markAdded() { markUnsynced(); }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);

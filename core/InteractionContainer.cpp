@@ -99,6 +99,14 @@ void InteractionContainer::eraseAt(size_t idx) {
     ++changes;
 }
 
+void InteractionContainer::reserve(size_t n) {
+    if (n <= size()) return;
+    linIntrs.reserve(n);
+    pairIds.reserve(2 * n);
+    wasReal.reserve(n);
+    objects.reserve(n);
+}
+
 void InteractionContainer::clear() {
     linIntrs.clear();
     pairIds.clear();

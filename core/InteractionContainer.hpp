@@ -23,6 +23,10 @@ public:
     bool insertPotential(id_t a, id_t b); // a pair without object (the collider); false if it exists
     bool erase(id_t a, id_t b);
     void eraseAt(size_t k);
+    // Room for n interactions in every column (a collider that knows how many pairs it will add:
+    // growing the columns one push_back at a time held up to twice their size, and the old and
+    // new arrays at once while they moved).
+    void reserve(size_t n);
     void clear();
     size_t size() const { return pairIds.size() / 2; }
     size_t countReal() const;

@@ -147,6 +147,8 @@ void InsertionSortCollider::rebuild() {
     }
     for (const auto& p : stale) intrs.erase(p.first, p.second);
     // Sweep along x: every body whose lower bound lies inside [min, max] of another may overlap it.
+    // (the new pairs are collected first, so that the container's columns are sized once)
+    std::vector<std::pair<Body::id_t, Body::id_t>> added;
     const auto& xs = axes[0];
     for (size_t i = 0; i < xs.size(); ++i) {
         if (!xs[i].isMin) continue;
@@ -155,9 +157,11 @@ void InsertionSortCollider::rebuild() {
             if (!xs[j].isMin) continue;
             const Body::id_t b = xs[j].id;
             if (Body::mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && intrs.findIndex(a, b) < 0)
-                intrs.insertPotential(std::min(a, b), std::max(a, b));
+                added.emplace_back(std::min(a, b), std::max(a, b));
         }
     }
+    intrs.reserve(intrs.size() + added.size());
+    for (const auto& p : added) intrs.insertPotential(p.first, p.second);
 }
 
 void InsertionSortCollider::preSave() {

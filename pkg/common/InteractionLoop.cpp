@@ -194,7 +194,7 @@ void InteractionLoop::assignPairsToThreads(int threads) {
         const int ta = owner[intrs.pairIds[2 * k]], tb = owner[intrs.pairIds[2 * k + 1]], f = fixed[k];
         const int t = f >= 0 ? f : (load[tb] < load[ta] ? tb : ta);
         load[t] += (f < 0) * (intrs.wasReal[k] ? realWeight : 1);
-        threadPairs[t].push_back(k);
+        threadPairs[t].push_back((uint32_t)k);
     }
     threadPairsFor = intrs.changes;
     threadPairsScene = scene->serial;
@@ -219,7 +219,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     Scene& s = *scene;
     InteractionContainer& intrs = s.interactions;
-    const std::vector<long>& pairs = threadPairs[list];
+    const std::vector<uint32_t>& pairs = threadPairs[list];
     Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
     const bool fuse = fusedPasses;
@@ -468,7 +468,7 @@ void InteractionLoop::action() {
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
         // the entries to test: all, or with the skin those not certainly beyond reach since their
         // last test (gathered without branches: which ones are skipped is unpredictable)
-        const std::vector<long>& pairs = threadPairs[list];
+        const std::vector<uint32_t>& pairs = threadPairs[list];
         const Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
         ListWork& w = *work[list];
         w.count = pairs.size();

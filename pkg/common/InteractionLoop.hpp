@@ -111,7 +111,7 @@ private:
     // a boundary (a body with many partners, e.g. a facet), which follow the other body (else the
     // thread owning the boundaries would get most of them). In container order within each list:
     // one thread gives the serial order; the split depends only on the interactions, never on timing.
-    std::vector<std::vector<long>> threadPairs;
+    std::vector<std::vector<uint32_t>> threadPairs; // (positions in O.interactions: fewer than 2^32, see InteractionContainer::append)
     long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
     long long threadPairsBuild = 0;                         // incremented by every rebuild
     size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then

@@ -26,6 +26,8 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
     const Real dt = scene->dt;
     const bool neverErase = cundallStrack.neverErase;
     ForceContainer& forces = scene->forces;
+    Vector3r* const force = forces.inPlaceForces(); // (one thread: adds in place, as addContact would)
+    Vector3r* const torque = forces.inPlaceTorques();
     for (size_t j = 0; j < n; ++j) {
         const Contact& x = c[j];
         ScGeom& g = static_cast<ScGeom&>(*x.geom);
@@ -97,9 +99,17 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
         const Real F0 = -f0 - e0, F1 = -f1 - e1, F2 = -f2 - e2; // on body 1
         const Real arm0 = n1 * F2 - n2 * F1, arm1 = n2 * F0 - n0 * F2, arm2 = n0 * F1 - n1 * F0;
         const Real l1 = r1 - 0.5 * depth, l2 = r2 - 0.5 * depth;
-        forces.addContact(x.id1, x.id2, Vector3r(F0, F1, F2), Vector3r(l1 * arm0, l1 * arm1, l1 * arm2), Vector3r(l2 * arm0, l2 * arm1, l2 * arm2));
+        const Vector3r F(F0, F1, F2), T1(l1 * arm0, l1 * arm1, l1 * arm2), T2(l2 * arm0, l2 * arm1, l2 * arm2);
+        if (force) {
+            force[x.id1] += F;
+            torque[x.id1] += T1;
+            force[x.id2] -= F;
+            torque[x.id2] += T2;
+        } else
+            forces.addContact(x.id1, x.id2, F, T1, T2);
         keep[j] = true;
     }
+    if (force && n) forces.markAdded();
 }
 
 } // namespace yade
