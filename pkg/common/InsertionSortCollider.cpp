@@ -160,6 +160,9 @@ void InsertionSortCollider::rebuild() {
                 added.emplace_back(std::min(a, b), std::max(a, b));
         }
     }
+    // in the order of the bodies' ids, which the interaction loop follows (its lists are sorted so):
+    // the container's columns are then read in order too
+    std::sort(added.begin(), added.end());
     intrs.reserve(intrs.size() + added.size());
     for (const auto& p : added) intrs.insertPotential(p.first, p.second);
 }

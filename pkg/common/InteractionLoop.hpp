@@ -109,8 +109,9 @@ private:
     // the states it reads were written on the same core; pairs across two ranges go to the one of
     // their two threads with less work (contacts weigh more than potential pairs), except pairs with
     // a boundary (a body with many partners, e.g. a facet), which follow the other body (else the
-    // thread owning the boundaries would get most of them). In container order within each list:
-    // one thread gives the serial order; the split depends only on the interactions, never on timing.
+    // thread owning the boundaries would get most of them). Each list is in the order of the pairs'
+    // smaller body id, then container order (locality of the body columns); one thread gives the
+    // serial order; the split and the order depend only on the interactions, never on timing.
     std::vector<std::vector<uint32_t>> threadPairs; // (positions in O.interactions: fewer than 2^32, see InteractionContainer::append)
     long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
     long long threadPairsBuild = 0;                         // incremented by every rebuild
@@ -159,6 +160,7 @@ private:
     }
     struct {
         std::vector<int> owner, partners, fixed;
+        std::vector<uint32_t> start, sorted;
     } assignScratch;
 };
 
