@@ -14,6 +14,9 @@ public:
     Vector3i cellDist = Vector3i::Zero();
     std::shared_ptr<IGeom> geom;
     std::shared_ptr<IPhys> phys;
+    // Set when the container erased this interaction while someone (Python) still held it: its
+    // Python attributes then raise instead of showing a pair that no longer exists.
+    bool erased = false;
     template <class V> void visit(V& v) {
         Serializable::visit(v);
         v.attr("id1", id1, "Id of the first body", Attr::readonly);

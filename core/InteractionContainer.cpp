@@ -29,8 +29,14 @@ const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) cons
     return I;
 }
 
+InteractionContainer::~InteractionContainer() {
+    for (const Ptr& I : linIntrs)
+        if (I) I->erased = true;
+}
+
 bool InteractionContainer::append(id_t a, id_t b, Ptr I) {
     if (a < 0 || b < 0 || a == b) throw std::invalid_argument("interaction needs two distinct non-negative ids");
+    if (I && I->erased) throw std::invalid_argument("this interaction was erased; make a new one");
     if (size() >= std::numeric_limits<uint32_t>::max()) throw std::length_error("too many interactions");
     resizeBodies((size_t)std::max(a, b) + 1);
     if (findIndex(a, b) >= 0) return false;
@@ -80,6 +86,7 @@ bool InteractionContainer::erase(id_t a, id_t b) {
 
 void InteractionContainer::eraseAt(size_t idx) {
     const id_t a = pairIds[2 * idx], b = pairIds[2 * idx + 1];
+    if (linIntrs[idx]) linIntrs[idx]->erased = true;
     unlinkPartner(a, b);
     unlinkPartner(b, a);
     const size_t last = size() - 1;
@@ -108,6 +115,8 @@ void InteractionContainer::reserve(size_t n) {
 }
 
 void InteractionContainer::clear() {
+    for (const Ptr& I : linIntrs)
+        if (I) I->erased = true;
     linIntrs.clear();
     pairIds.clear();
     wasReal.clear();

@@ -14,6 +14,10 @@ class InteractionContainer {
 public:
     using id_t = Body::id_t;
     using Ptr = std::shared_ptr<Interaction>;
+    InteractionContainer() = default;
+    InteractionContainer(const InteractionContainer&) = delete;
+    InteractionContainer& operator=(const InteractionContainer&) = delete;
+    ~InteractionContainer(); // (marks the objects someone still holds as erased)
     // Position of the pair (a, b), in either order, in the container; -1 if none.
     long findIndex(id_t a, id_t b) const;
     // The interaction of the pair (a, b) in either order (its object is made if it had none);

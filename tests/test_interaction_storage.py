@@ -126,11 +126,55 @@ def test_save_and_load_keep_potential_pairs(tmp_path):
     assert O.interactions.has(1, 2) and not O.interactions[1, 2].isReal
 
 
-def test_iteration_holds_the_contacts_it_will_yield():
-    three_spheres()
+def test_iteration_skips_what_was_erased_meanwhile():
+    O.bodies.append([sphere((x * 1.99e-3, 0, 0), 1e-3) for x in range(4)])
+    O.engines = engines()
+    O.dt = 1e-6
+    O.step()
+    it = iter(O.interactions)
+    first = next(it)
+    O.interactions.erase(2, 3)
+    rest = list(it)
+    assert [(i.id1, i.id2) for i in [first] + rest] == [(0, 1), (1, 2)]
     it = iter(O.interactions)
     O.interactions.clear()
-    i = next(it)
-    assert (i.id1, i.id2) == (0, 1) and i.isReal
-    with pytest.raises(StopIteration):
-        next(it)
+    assert list(it) == []
+
+
+def test_a_held_interaction_that_was_erased_raises_instead_of_showing_stale_data():
+    three_spheres()
+    potential, contact = O.interactions[1, 2], O.interactions[0, 1]
+    O.interactions.erase(1, 2)
+    for attr in ('isReal', 'geom', 'phys', 'id1', 'iterMadeReal'):
+        with pytest.raises(ReferenceError, match='erased'):
+            getattr(potential, attr)
+    with pytest.raises(ReferenceError):
+        potential.phys = None
+    assert contact.isReal  # the one that moved into the hole is still alive
+    O.bodies.erase(0)
+    with pytest.raises(ReferenceError, match=r'##0\+1'):
+        contact.phys
+
+
+def test_held_interactions_raise_after_clear_and_reset():
+    three_spheres()
+    i = O.interactions[0, 1]
+    O.interactions.clear()
+    with pytest.raises(ReferenceError):
+        i.isReal
+    O.reset()
+    three_spheres()
+    j = O.interactions[0, 1]
+    O.reset()
+    with pytest.raises(ReferenceError):
+        j.geom
+
+
+def test_collider_dropping_a_held_potential_pair_makes_it_raise():
+    three_spheres()
+    held = O.interactions[1, 2]
+    O.bodies[2].state.vel = (10, 0, 0)  # away from #1: the bounds separate, the collider drops the pair
+    O.run(300, True)
+    assert not O.interactions.has(1, 2)
+    with pytest.raises(ReferenceError):
+        held.isReal

@@ -109,6 +109,39 @@ template <class D, class A, class B> static void bindDispFunctor2D(const char* d
 }
 
 // Members that are computed, not stored: derived properties and methods.
+// An Interaction that O.interactions erased (the collider dropped the pair, a body was erased, the
+// interactions were cleared) while Python held it: its attributes raise ReferenceError instead of
+// showing a pair that no longer exists (InteractionContainer::eraseAt marks it).
+static void guardErasedInteractions(py::module_& m) {
+    py::object cls = m.attr("Interaction");
+    py::object property = py::module_::import("builtins").attr("property");
+    auto check = [](py::handle self, const std::string& name) {
+        const Interaction& I = py::cast<const Interaction&>(self);
+        if (!I.erased) return;
+        const std::string message = ("Interaction ##" + std::to_string(I.id1) + "+" + std::to_string(I.id2) + " was erased from O.interactions "
+                    "(the bounds of its bodies no longer overlap, one of them was erased, or the interactions were cleared): "
+                    "its ." + name + " can no longer be read or set; get the pair again with O.interactions[id1, id2]");
+        PyErr_SetString(PyExc_ReferenceError, message.c_str());
+        throw py::error_already_set();
+    };
+    for (const char* name : {"id1", "id2", "iterMadeReal", "cellDist", "geom", "phys", "isReal"}) {
+        py::object old = cls.attr("__dict__")[name];
+        py::object fget = old.attr("fget"), fset = old.attr("fset");
+        const std::string n = name;
+        py::cpp_function getter([fget, n, check](py::object self) {
+            check(self, n);
+            return fget(self);
+        });
+        py::object setter = py::none();
+        if (!fset.is_none())
+            setter = py::cpp_function([fset, n, check](py::object self, py::object v) {
+                check(self, n);
+                fset(self, v);
+            });
+        py::setattr(cls, name, property(getter, setter, py::none(), old.attr("__doc__")));
+    }
+}
+
 static void bindExtras(py::module_& m) {
     auto serCls = py::reinterpret_borrow<py::class_<Serializable, std::shared_ptr<Serializable>>>(py::type::handle_of<Serializable>());
     serCls.def("dict", [](py::object self) { return attrDict(py::cast<Serializable&>(self), self); },
@@ -156,6 +189,7 @@ static void bindExtras(py::module_& m) {
 
     existing<Interaction, Serializable>()
             .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)");
+    guardErasedInteractions(m);
 
     ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<BoundDispatcher&>(s), a, "BoundDispatcher"); };
     ctorArgHandlers()["IGeomDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<IGeomDispatcher&>(s), a, "IGeomDispatcher"); };

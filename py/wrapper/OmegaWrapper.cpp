@@ -267,6 +267,7 @@ void bindOmega(py::module_& m) {
     py::class_<RealInteractionIterator>(m, "InteractionIterator", "Iterator over the real interactions of O.interactions")
             .def("__iter__", [](RealInteractionIterator& it) -> RealInteractionIterator& { return it; }, py::return_value_policy::reference_internal)
             .def("__next__", [](RealInteractionIterator& it) {
+                while (it.next < it.items.size() && it.items[it.next]->erased) ++it.next; // (erased since the iteration began)
                 if (it.next >= it.items.size()) throw py::stop_iteration();
                 return std::move(it.items[it.next++]);
             });
