@@ -99,7 +99,9 @@ bool InteractionLoop::prepareQuickReject() {
     facetPlanes.clear(); // facets may move or turn: their planes are computed every step
     for (Body::id_t id : shapeCache.facetIds) {
         const Body& b = *bodies[id];
-        facetPlanes.push_back(FacetPlane{b.state->pos(), b.state->ori() * static_cast<const Facet&>(*b.shape).normal});
+        const Facet& f = static_cast<const Facet&>(*b.shape);
+        const Quaternionr& ori = b.state->ori();
+        facetPlanes.push_back(FacetPlane{b.state->pos(), ori * f.normal, {ori * f.ne[0], ori * f.ne[1], ori * f.ne[2]}, f.icr});
     }
     return true;
 }
@@ -147,7 +149,16 @@ bool InteractionLoop::facetSphereReject(Body::id_t sphere, Real facetCode, Real&
     const FacetPlane& plane = facetPlanes[(size_t)(-1 - facetCode)];
     const Vector3r d = shapePos[sphere] - plane.point;
     const Real reach = facetSphereReach * radius;
-    const Real distance = std::abs(plane.normal.dot(d)), limit = reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach);
+    // The distance from the triangle is at least that from the half-plane (of the facet's plane)
+    // inside the edge the centre is farthest beyond: out of the plane by |n·d|, beyond that edge's
+    // line by its ne·d - icr (0 inside the triangle). The functor finds the contact point on the
+    // triangle (face, edge or vertex; shrinkFactor only makes it smaller), so it finds no contact
+    // either. Each of these half-plane distances moves at most as much as the sphere: the skin's
+    // bound holds for this gap as for the plane's. (The margin covers the functor's rounding in
+    // the facet's frame.)
+    const Real height = plane.normal.dot(d);
+    const Real beyond = std::max(Real(0), std::max({plane.edge[0].dot(d), plane.edge[1].dot(d), plane.edge[2].dot(d)}) - plane.icr);
+    const Real distance = std::sqrt(height * height + beyond * beyond), limit = reach + 1e-12 * (d.cwiseAbs().sum() + plane.point.cwiseAbs().sum() + reach);
     gap = distance - limit;
     return distance > limit; // false for NaN
 }

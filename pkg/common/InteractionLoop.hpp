@@ -45,8 +45,12 @@ private:
     // integrator's positions (Scene::positionMirror) while they are current, else copied from the
     // bodies into quickPos; the radii are shapeCache's.
     struct FacetPlane {
-        Vector3r point, normal; // a point of the plane, unit normal (global)
-        bool operator==(const FacetPlane& o) const { return point == o.point && normal == o.normal; }
+        Vector3r point, normal; // the facet's centre (its inscribed circle's), unit normal (global)
+        Vector3r edge[3];       // the in-plane outward normals of its edges (global)
+        Real icr;               // the radius of its inscribed circle
+        bool operator==(const FacetPlane& o) const {
+            return point == o.point && normal == o.normal && edge[0] == o.edge[0] && edge[1] == o.edge[1] && edge[2] == o.edge[2] && icr == o.icr;
+        }
     };
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
@@ -69,8 +73,8 @@ private:
     void prepareShapes();      // refreshes shapeCache when bodies or anything from Python changed
     bool prepareQuickReject(); // sets shapePos and shapeRadius; false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair; gap is
-    // then how far the pair is beyond the functor's reach (distance of the centres, or of the
-    // sphere's centre from the facet's plane, minus the reach).
+    // then how far the pair is beyond the functor's reach (distance of the centres, or a lower
+    // bound of the distance of the sphere's centre from the facet's triangle, minus the reach).
     bool quickReject(Body::id_t id1, Body::id_t id2, Real& gap) const {
         const Real ra = shapeRadius[id1], rb = shapeRadius[id2];
         if (ra > 0 && rb > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
