@@ -133,6 +133,8 @@ void InteractionLoop::prepareSkin(bool quick) {
     skin.tolerance = 1e-11 * scale;
     skin.gap.resize(threadPairs.size());
     skin.todo.resize(threadPairs.size());
+    skin.near.resize(threadPairs.size());
+    skin.nearLimit.assign(threadPairs.size(), -Inf);
     for (size_t list = 0; list < threadPairs.size(); ++list) skin.gap[list].assign(threadPairs[list].size(), -Inf);
     skin.facetPlanes = facetPlanes;
     skin.sphereSphereReach = sphereSphereReach;
@@ -500,11 +502,27 @@ void InteractionLoop::action() {
         w.todo = nullptr;
         if (gaps) {
             std::vector<unsigned>& entries = skin.todo[list];
-            entries.resize(pairs.size());
+            std::vector<unsigned>& near = skin.near[list];
+            Real& nearLimit = skin.nearLimit[list];
             size_t count = 0;
-            for (size_t i = 0; i < pairs.size(); ++i) {
-                entries[count] = (unsigned)i;
-                count += !(gaps[i] > skipAbove);
+            if (skipAbove <= nearLimit) { // the entries left out of near are still beyond reach
+                entries.resize(near.size());
+                for (const unsigned i : near) {
+                    entries[count] = i;
+                    count += !(gaps[i] > skipAbove);
+                }
+            } else { // all, keeping those within twice this step's margin as near
+                nearLimit = 2 * skipAbove;
+                entries.resize(pairs.size());
+                near.resize(pairs.size());
+                size_t nearCount = 0;
+                for (size_t i = 0; i < pairs.size(); ++i) {
+                    entries[count] = (unsigned)i;
+                    count += !(gaps[i] > skipAbove);
+                    near[nearCount] = (unsigned)i;
+                    nearCount += !(gaps[i] > nearLimit);
+                }
+                near.resize(nearCount);
             }
             w.count = count;
             w.todo = entries.data();

@@ -98,6 +98,11 @@ private:
         std::vector<Vector3r> refPos;        // each body's position at the start of the epoch
         std::vector<std::vector<Real>> gap;  // per thread list, per entry: g - 2D (-Inf: test the pair)
         std::vector<std::vector<unsigned>> todo; // per thread list: the entries tested in this step
+        // Per thread list, the entries whose value was at most nearLimit at the last full pass over
+        // the list (the others were not tested since, so their values did not change): while the
+        // margin 2D' stays below nearLimit only these are looked at (a full pass when D doubled).
+        std::vector<std::vector<unsigned>> near;
+        std::vector<Real> nearLimit;             // (-Inf: none yet in this epoch)
         std::vector<FacetPlane> facetPlanes; // facet planes at the start of the epoch
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
         Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
