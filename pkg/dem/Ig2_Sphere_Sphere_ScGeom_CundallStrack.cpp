@@ -2,7 +2,7 @@
 // the commonest contact of a granular scene: Ig2_Sphere_Sphere_ScGeom::go() (the contact geometry
 // and ScGeom::precompute(), 3.3) followed by Law2_ScGeom_FrictPhys_CundallStrack::go() (3.4),
 // written out for two contacts at a time, one in each lane of an SSE2 register (x86-64's
-// baseline). Every product, sum, quotient and square root is the one of those functions, in the
+// baseline; elsewhere two scalars). Every product, sum, quotient and square root is the one of those functions, in the
 // same order (Eigen sums x + y + z from the left, as here), and each lane rounds as scalar code
 // does, so the results are the same bits; tests/test_fused_pass.py compares the two paths bit for
 // bit. The forces are added contact by contact in the batch's order. Change the physics in the
@@ -10,14 +10,17 @@
 #include <core/Scene.hpp>
 #include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
 #include <pkg/dem/Law2_ScGeom_FrictPhys_CundallStrack.hpp>
-#include <emmintrin.h>
 #include <typeinfo>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace yade {
 
 bool Ig2_Sphere_Sphere_ScGeom::fusesWith(const LawFunctor& law) const { return typeid(law) == typeid(Law2_ScGeom_FrictPhys_CundallStrack); }
 
 namespace {
+#ifdef __SSE2__
 // A value of each of the two contacts (lane 0: the first, lane 1: the second).
 struct Two {
     __m128d v;
@@ -38,7 +41,33 @@ inline Two operator/(Two a, Two b) { return _mm_div_pd(a.v, b.v); }
 inline Two operator-(Two a) { return _mm_xor_pd(a.v, _mm_set1_pd(-0.0)); } // (exact, as a scalar's -x)
 inline Two sqrt(Two a) { return _mm_sqrt_pd(a.v); }
 // where `mask` is set, a; elsewhere b
-inline Two select(__m128d mask, Two a, Two b) { return _mm_or_pd(_mm_and_pd(mask, a.v), _mm_andnot_pd(mask, b.v)); }
+using Mask = __m128d;
+inline Mask greater(Two a, Two b) { return _mm_cmpgt_pd(a.v, b.v); }
+inline Two select(Mask mask, Two a, Two b) { return _mm_or_pd(_mm_and_pd(mask, a.v), _mm_andnot_pd(mask, b.v)); }
+#else // (other processors: the same arithmetic on two scalars)
+struct Two {
+    Real a, b;
+    Two(Real x, Real y) : a(x), b(y) {}
+    explicit Two(Real x) : a(x), b(x) {}
+    Real first() const { return a; }
+    Real second() const { return b; }
+    void store(Real& x, Real& y) const {
+        x = a;
+        y = b;
+    }
+};
+inline Two operator+(Two x, Two y) { return Two(x.a + y.a, x.b + y.b); }
+inline Two operator-(Two x, Two y) { return Two(x.a - y.a, x.b - y.b); }
+inline Two operator*(Two x, Two y) { return Two(x.a * y.a, x.b * y.b); }
+inline Two operator/(Two x, Two y) { return Two(x.a / y.a, x.b / y.b); }
+inline Two operator-(Two x) { return Two(-x.a, -x.b); }
+inline Two sqrt(Two x) { return Two(std::sqrt(x.a), std::sqrt(x.b)); }
+struct Mask {
+    bool a, b;
+};
+inline Mask greater(Two x, Two y) { return Mask{x.a > y.a, x.b > y.b}; }
+inline Two select(Mask m, Two x, Two y) { return Two(m.a ? x.a : y.a, m.b ? x.b : y.b); }
+#endif
 // component i of the vectors of both contacts
 inline Two component(const Vector3r& a, const Vector3r& b, int i) { return Two(a[i], b[i]); }
 inline void store(Vector3r& a, Vector3r& b, Two x, Two y, Two z) {
@@ -129,7 +158,7 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
         const Two tanPhi(pa.tangensOfFrictionAngle, pb.tangensOfFrictionAngle);
         const Two maxFs2 = ((f0 * f0 + f1 * f1) + f2 * f2) * tanPhi * tanPhi;
         const Two fs2 = (e0 * e0 + e1 * e1) + e2 * e2;
-        const __m128d sliding = _mm_cmpgt_pd(fs2.v, maxFs2.v); // Mohr-Coulomb return where set
+        const Mask sliding = greater(fs2, maxFs2); // Mohr-Coulomb return where set
         const Two scale = sqrt(maxFs2) / sqrt(fs2);
         e0 = select(sliding, e0 * scale, e0);
         e1 = select(sliding, e1 * scale, e1);
