@@ -17,15 +17,17 @@ static inline Vector3r accelOf(const Vector3r& f, const Vector3r& m, int blocked
     return a;
 }
 
-// sin(angle/2) and cos(angle/2). Rotations per step are small: for angle/2 below 1e-2 the Taylor
-// series to x⁷ and x⁸ (truncation below 1e-21 relative) replaces the library call (within an ulp).
-static inline void sinCosHalf(Real angle, Real& s, Real& c) {
+// sin(x)/x and cos(x) for x = angle/2. Rotations per step are small: for x below 1e-2 the Taylor
+// series to x⁶ and x⁸ (truncation below 1e-21 relative) replaces the library calls (within an ulp).
+// The coefficients are products by constants, not quotients, and the caller needs sin(x)/x, not
+// sin(x) (then divided by |ω|): the divisions in a chain made the integrator wait on them.
+static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
     const Real x = 0.5 * angle, x2 = x * x;
     if (x2 < 1e-4) {
-        s = x * (1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42)));
-        c = 1 - x2 / 2 * (1 - x2 / 12 * (1 - x2 / 30 * (1 - x2 / 56)));
+        sinc = 1 - x2 * (1. / 6) * (1 - x2 * (1. / 20) * (1 - x2 * (1. / 42)));
+        c = 1 - x2 * 0.5 * (1 - x2 * (1. / 12) * (1 - x2 * (1. / 30) * (1 - x2 * (1. / 56))));
     } else {
-        s = std::sin(x);
+        sinc = std::sin(x) / x;
         c = std::cos(x);
     }
 }
@@ -172,9 +174,9 @@ void NewtonIntegrator::action() {
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
         if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
-            Real sinHalf, cosHalf;
-            sinCosHalf(angle, sinHalf, cosHalf);
-            const Real k = sinHalf / angVelNorm;
+            Real sincHalf, cosHalf;
+            sincCosHalf(angle, sincHalf, cosHalf);
+            const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
             const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
             // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
             // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
