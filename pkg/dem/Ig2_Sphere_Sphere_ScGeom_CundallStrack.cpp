@@ -70,6 +70,10 @@ inline Two select(Mask m, Two x, Two y) { return Two(m.a ? x.a : y.a, m.b ? x.b 
 #endif
 // component i of the vectors of both contacts
 inline Two component(const Vector3r& a, const Vector3r& b, int i) { return Two(a[i], b[i]); }
+constexpr size_t lookahead = 8; // contacts prefetched ahead in the pass
+inline void prefetchLines(const void* p, int lines) {
+    for (int l = 0; l < lines; ++l) __builtin_prefetch(static_cast<const char*>(p) + 64 * l);
+}
 inline void store(Vector3r& a, Vector3r& b, Two x, Two y, Two z) {
     x.store(a[0], b[0]);
     y.store(a[1], b[1]);
@@ -94,6 +98,16 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
     ScGeom spareGeom; // (the second lane of an odd last contact writes here)
     FrictPhys sparePhys;
     for (size_t j = 0; j < n; j += 2) {
+        for (size_t ahead = j + lookahead; ahead < std::min(n, j + lookahead + 2); ++ahead) { // (what the contacts a few steps on read)
+            const Contact& x = c[ahead];
+            prefetchLines(x.geom, 3);
+            prefetchLines(x.phys, 2);
+            for (const Body::id_t id : {x.id1, x.id2}) {
+                __builtin_prefetch(&cols.pos[id]);
+                __builtin_prefetch(&cols.vel[id]);
+                __builtin_prefetch(&cols.angVel[id]);
+            }
+        }
         const bool two = j + 1 < n;
         const Contact& xa = c[j];
         const Contact& xb = two ? c[j + 1] : c[j];
