@@ -66,3 +66,4 @@ def test_fused_pass_gives_the_same_bits_as_the_two_functors(neverErase, energy):
 
 def test_fused_pass_is_used_for_frictionless_contacts_too():
     assert run(True, 500, frictionAngle=0)[0] == run(False, 500, frictionAngle=0)[0]
+

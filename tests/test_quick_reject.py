@@ -1,0 +1,51 @@
+"""InteractionLoop.fastPath's facet-sphere quick reject (InteractionLoop::facetSphereReject): a
+pair is skipped when a lower bound of the sphere centre's distance from the facet's triangle is
+beyond reach, which must never skip a pair Ig2_Facet_Sphere_ScGeom would have made a contact:
+the trajectories with and without the fast path are the same bits."""
+import numpy as np
+
+from yade import *  # noqa: F401,F403
+from yade import O, geom
+from yade.utils import *  # noqa: F401,F403
+
+
+def slide_over_a_wall(fast):
+    """Spheres rolling over a two-triangle facet wall: across its diagonal, past its outer edges
+    and corners, and at a gap from it (contacts with one or both triangles, starting and ending)."""
+    O.reset()
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.3, density=2600))
+    wall = O.bodies.append(geom.facetBox((0, 0, 0), (.05, .05, .05), wallMask=16))  # only the bottom wall (-z): two facets
+    r = .005
+    z = -.05 + r * .999
+    starts = [((-.04, -.03, z), (.5, .4, 0)),            # across the diagonal, off the far edge
+              ((.03, -.04, z), (.1, .6, 0)),             # along the wall, off an edge
+              ((-.045, .045, z), (-.2, .2, 0)),          # off a corner
+              ((.001, -.001, -.05 + r * 1.3), (0, 0, -.3))]  # falling onto the diagonal
+    for pos, vel in starts:
+        s = sphere(pos, r)
+        s.state.vel = vel
+        O.bodies.append(s)
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                           [Law2_ScGeom_FrictPhys_CundallStrack()])
+    loop.fastPath = fast
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
+                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    O.dt = .5 * PWaveTimeStep()
+    facetContacts = set()
+    for chunk in range(300):
+        O.run(10, True)
+        facetContacts |= {(i.id1, i.id2) for i in O.interactions if i.isReal and (i.id1 in wall or i.id2 in wall)}
+    a = O.bodies.arrays()
+    return {k: np.array(getattr(a, k)).tobytes() for k in ('pos', 'vel', 'angVel', 'ori')}, facetContacts
+
+
+def test_facet_triangle_quick_reject_changes_nothing():
+    # fastPath rejects facet-sphere pairs from a bound of the distance to the triangle
+    # (InteractionLoop::facetSphereReject); without it every pair goes to Ig2_Facet_Sphere_ScGeom
+    fast, contactsFast = slide_over_a_wall(True)
+    general, contactsGeneral = slide_over_a_wall(False)
+    assert contactsFast == contactsGeneral
+    assert len({min(p) for p in contactsFast}) == 2, "the spheres touched both triangles of the wall"
+    assert len({max(p) for p in contactsFast}) == 4, "every sphere touched the wall"
+    for k in fast:
+        assert fast[k] == general[k], k
