@@ -28,7 +28,7 @@ void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* resul
         const Body& b1 = *bodies[i.id1];
         const Body& b2 = *bodies[i.id2];
         result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, Vector3r::Zero(), false, i);
-        c[j].geom = i.geom.get();
+        if (i.geom.get() != c[j].geom) c[j].setGeom(i.geom); // (a new one: the record's too)
     }
 }
 

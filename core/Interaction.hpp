@@ -40,8 +40,8 @@ public:
 
 // One interaction as the batched functors see it (IGeomFunctorBatched, LawFunctorBatched): its
 // geometry and physics objects and the two ids, read from InteractionContainer's columns; the
-// Interaction object itself is touched only to create or end the contact (a potential pair may
-// have none yet: interaction() makes it).
+// Interaction object is not touched (a pair has one only when Python asked for it); interaction()
+// makes it, for functors written in the one-contact form.
 class InteractionContainer;
 struct Contact {
     Interaction* I = nullptr;               // the interaction, or null: entry k of *owner
@@ -60,10 +60,11 @@ struct Contact {
     // A new geometry object of type G for this interaction (Ig2 functors, first contact).
     template <class G> G& makeGeom() {
         auto g = std::make_shared<G>();
-        interaction().geom = g;
-        geom = g.get();
-        return *g;
+        G& r = *g;
+        setGeom(std::move(g));
+        return r;
     }
+    void setGeom(std::shared_ptr<IGeom> g); // (InteractionContainer.cpp)
 };
 
 } // namespace yade

@@ -262,12 +262,10 @@ Node SceneIO::toNode(Scene& s) {
     Node& bodies = sc.add("bodies");
     for (const auto& b : s.bodies) bodies.children.push_back(w.write(b));
     Node& intrs = sc.add("interactions");
-    std::vector<std::shared_ptr<Interaction>> made; // objects of potential pairs that had none (alive until written: the writer knows objects by address)
+    std::vector<std::shared_ptr<Interaction>> made; // objects of pairs that had none (alive until written: the writer knows objects by address)
     for (size_t k = 0; k < s.interactions.size(); ++k) {
-        std::shared_ptr<Interaction> I;
-        if (s.interactions.object(k)) I = s.interactions[k];
-        else made.push_back(I = std::make_shared<Interaction>(s.interactions.pairIds[2 * k], s.interactions.pairIds[2 * k + 1]));
-        intrs.children.push_back(w.write(I));
+        made.push_back(s.interactions.snapshot(k));
+        intrs.children.push_back(w.write(made.back()));
     }
     Node& engines = sc.add("engines");
     for (const auto& e : s.getEngines()) engines.children.push_back(w.write(e));

@@ -178,3 +178,32 @@ def test_collider_dropping_a_held_potential_pair_makes_it_raise():
     assert not O.interactions.has(1, 2)
     with pytest.raises(ReferenceError):
         held.isReal
+
+
+def test_contacts_keep_their_geometry_and_physics_after_iteration_drops_its_objects():
+    """A contact has no Interaction object unless Python asks (its geometry and physics belong to
+    O.interactions); iterating makes one object at a time and drops it when the iteration moves on:
+    the geometry and physics seen later are the same objects, updated by the steps since."""
+    three_spheres()
+    geoms = [i.geom for i in O.interactions]
+    physs = [i.phys for i in O.interactions]
+    assert len(geoms) == 1
+    depth0 = geoms[0].penetrationDepth
+    O.bodies[1].state.vel = (-1e-3, 0, 0)  # pushes into #0: the overlap grows
+    O.run(10, True)
+    i = O.interactions[0, 1]
+    assert i.geom is geoms[0] and i.phys is physs[0]
+    # (the geometry of step n sees the positions of step n - 1: 9 moves of 1 nm)
+    assert geoms[0].penetrationDepth == pytest.approx(depth0 + 9 * 1e-6 * 1e-3, rel=1e-9)
+    assert physs[0].normalForce.norm() == pytest.approx(physs[0].kn * geoms[0].penetrationDepth, rel=1e-9)
+
+
+def test_physics_replaced_while_iterating_is_what_the_next_step_uses():
+    three_spheres()
+    kn0 = O.interactions[0, 1].phys.kn
+    for i in O.interactions:  # (each object is dropped after the loop body, its new phys kept)
+        i.phys = FrictPhys(kn=2 * kn0, ks=i.phys.ks, tangensOfFrictionAngle=i.phys.tangensOfFrictionAngle)
+    O.step()
+    i = O.interactions[0, 1]
+    assert i.phys.kn == 2 * kn0
+    assert i.phys.normalForce.norm() == pytest.approx(2 * kn0 * i.geom.penetrationDepth, rel=1e-9)

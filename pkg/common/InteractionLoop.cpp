@@ -253,7 +253,6 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
     Body::id_t* ids = intrs.pairIds.data();
-    InteractionContainer::Objects* objects = intrs.objects.data();
     Scratch& sc = *scratch[threadNumber()];
     // (written by index into arrays of batchEntries: a push_back per entry cost more than the rest of the gathering)
     if (sc.entries.size() < batchEntries) {
@@ -292,24 +291,27 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
             std::swap(ids[2 * k], ids[2 * k + 1]);
         }
-        const InteractionContainer::Objects& o = objects[k];
+        const InteractionContainer::Record* rec = intrs.record((size_t)k);
+        IGeom* geom = rec ? rec->geom.get() : nullptr;
+        IPhys* phys = rec ? rec->phys.get() : nullptr;
+        LawFunctor* law = rec ? rec->law : nullptr;
         // the functors read the contact's objects once the whole batch is gathered: their loads
         // start now, all at once, instead of one contact after the other
-        prefetchObject(o.geom);
-        prefetchObject(o.phys);
+        prefetchObject(geom);
+        prefetchObject(phys);
         // an existing contact whose Ig2 and Law2 functors have a fused pass: both run in step 4
         IGeomFunctor* fused = nullptr;
-        if (o.law && o.geom && o.phys) {
-            if (sc.fuseGeom != geomEntry.functor || sc.fuseLaw != o.law) {
+        if (law && geom && phys) {
+            if (sc.fuseGeom != geomEntry.functor || sc.fuseLaw != law) {
                 sc.fuseGeom = geomEntry.functor;
-                sc.fuseLaw = o.law;
-                sc.fuses = fuse && geomEntry.functor->fusesWith(*o.law);
+                sc.fuseLaw = law;
+                sc.fuses = fuse && geomEntry.functor->fusesWith(*law);
             }
             if (sc.fuses) fused = geomEntry.functor;
         }
         sc.oneGeomFunctor &= !fused && (n == 0 || sc.entries[0].geom == geomEntry.functor);
-        sc.entries[n] = fused ? Scratch::Entry{k, nullptr, o.law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
-        sc.contacts[n] = Contact(&intrs, k, o.geom, o.phys, ids[2 * k], ids[2 * k + 1]);
+        sc.entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
+        sc.contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         ++n;
     }
     if (n == 0) return;
@@ -352,44 +354,52 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             ++live;
             continue;
         }
-        InteractionContainer::Objects& o = objects[x.k];
-        if (o.geom != c.geom) o.geom = c.geom; // a new one
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
             setWasReal(intrs, x.k, false);
             continue;
         }
+        InteractionContainer::Record& rec = *intrs.record((size_t)x.k); // (the geometry is there)
         if (!c.phys) {
-            Interaction& I = c.interaction();
-            const Body& b1 = *bodies[I.id1];
-            const Body& b2 = *bodies[I.id2];
+            const Body& b1 = *bodies[c.id1];
+            const Body& b2 = *bodies[c.id2];
             if (!b1.material || !b2.material) continue;
             const auto& physEntry = physDispatcher->getFunctor(*b1.material, *b2.material);
             if (!physEntry.functor) {
 #pragma omp critical(yadeError)
                 error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
-                        + " (bodies #" + std::to_string(I.id1) + " and #" + std::to_string(I.id2) + ")";
+                        + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
                 continue;
             }
+            // (the Ip2 functors take an Interaction: the pair's object if Python made one, else
+            // this thread's stand-in, so that no object is made per contact)
+            Interaction& I = rec.object ? *rec.object : sc.standIn;
+            if (&I == &sc.standIn) {
+                I.id1 = c.id1;
+                I.id2 = c.id2;
+                I.geom = rec.geom;
+                I.phys.reset();
+            }
             physEntry.functor->go(b1.material, b2.material, I);
-            o.phys = c.phys = I.phys.get();
-            o.law = nullptr;
-            I.iterMadeReal = s.iter;
+            std::shared_ptr<IPhys> phys = std::move(I.phys);
+            sc.standIn.geom.reset();
+            c.phys = phys.get();
+            intrs.setPhys((size_t)x.k, std::move(phys), s.iter);
 #pragma omp critical(yadeNewContact)
             {
-                s.newContactBodies.push_back(I.id1);
-                s.newContactBodies.push_back(I.id2);
+                s.newContactBodies.push_back(c.id1);
+                s.newContactBodies.push_back(c.id2);
             }
         }
-        if (!o.law) { // (chosen once per contact)
-            o.law = lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
-            if (!o.law) {
+        if (!rec.law) { // (chosen once per contact)
+            rec.law = lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
+            if (!rec.law) {
 #pragma omp critical(yadeError)
                 error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
                 continue;
             }
         }
-        x.law = o.law;
+        x.law = rec.law;
         if (live != e) { // (compacted over the entries left out)
             sc.entries[live] = x;
             sc.contacts[live] = c;
@@ -432,14 +442,15 @@ void InteractionLoop::action() {
 #endif
     cacheBuilt = false;
     prepareShapes();
-    if (intrs.objectsWrites != externalWrites() || intrs.objects.size() != intrs.size()) { // (Python may have set geom or phys)
+    if (intrs.objectsWrites != externalWrites() || intrs.objectsMade) { // (Python may have set geom or phys)
         intrs.objectsWrites = externalWrites();
         intrs.syncObjects();
     }
     if (intrs.lawTable != lawDispatcher->tableGeneration()) { // the Law2 functors chosen by another table
-        for (auto& o : intrs.objects) o.law = nullptr;
+        intrs.clearLaws();
         intrs.lawTable = lawDispatcher->tableGeneration();
     }
+    intrs.prepareRecords(); // (new contacts get their records in parallel)
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();

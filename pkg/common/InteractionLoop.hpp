@@ -156,6 +156,7 @@ private:
         const IGeomFunctor* fuseGeom = nullptr;
         const LawFunctor* fuseLaw = nullptr;
         bool fuses = false;
+        Interaction standIn; // what the Ip2 functors get for a pair without object
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,

@@ -19,9 +19,9 @@ template <class T, class Root> const T* castByIndex(const Root* p) {
     return memo[index] ? static_cast<const T*>(p) : nullptr;
 }
 
-bool contribution(const Interaction& I, int side, Vector3r& kt, Vector3r& kr) {
-    const auto* phys = castByIndex<NormShearPhys>(I.phys.get());
-    const auto* geom = castByIndex<GenericSpheresContact>(I.geom.get());
+bool contribution(const IGeom* g, const IPhys* p, int side, Vector3r& kt, Vector3r& kr) {
+    const auto* phys = castByIndex<NormShearPhys>(p);
+    const auto* geom = castByIndex<GenericSpheresContact>(g);
     if (!phys || !geom) return false;
     const Vector3r n2 = geom->normal.cwiseProduct(geom->normal);
     const Real arm = side == 1 ? geom->refR1 : geom->refR2;
@@ -48,8 +48,8 @@ void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best) {
     if (!scene.bodies.exists(id) || !scene.bodies[id]->isDynamic()) return; // (lowest() would find nothing: a facet's many partners are not read)
     Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
     for (const auto& partner : scene.interactions.partnersOf(id)) {
-        const Interaction* I = scene.interactions.object(partner.k);
-        if (I && I->isReal() && contribution(*I, I->id1 == id ? 1 : 2, ct, cr)) {
+        const InteractionContainer& intrs = scene.interactions;
+        if (intrs.isReal(partner.k) && contribution(intrs.geom(partner.k), intrs.phys(partner.k), intrs.pairIds[2 * partner.k] == id ? 1 : 2, ct, cr)) {
             kt += ct;
             kr += cr;
         }
@@ -71,10 +71,9 @@ CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem) {
     for (size_t k = 0; k < intrs.size(); ++k) {
         if (asLastLoopSawThem && !intrs.wasReal[k]) continue; // (a contiguous flag: most pairs are not touched)
         if (!intrs.isReal(k)) continue;
-        const Interaction& I = *intrs.object(k);
         for (int side = 1; side <= 2; ++side)
-            if (contribution(I, side, ct, cr)) {
-                const Body::id_t id = side == 1 ? I.id1 : I.id2;
+            if (contribution(intrs.geom(k), intrs.phys(k), side, ct, cr)) {
+                const Body::id_t id = intrs.pairIds[2 * k + side - 1];
                 kTrans[id] += ct;
                 kRot[id] += cr;
             }

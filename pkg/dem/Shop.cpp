@@ -42,9 +42,8 @@ Real Shop::unbalancedForce(Scene& scene, bool useMaxForce) {
     Real sumContact = 0;
     long nContacts = 0;
     for (size_t k = 0; k < scene.interactions.size(); ++k) {
-        const Interaction* I = scene.interactions.object(k);
-        if (!I || !I->isReal()) continue;
-        if (const auto* p = dynamic_cast<const NormShearPhys*>(I->phys.get())) {
+        if (!scene.interactions.isReal(k)) continue;
+        if (const auto* p = dynamic_cast<const NormShearPhys*>(scene.interactions.phys(k))) {
             sumContact += (p->normalForce + p->shearForce).norm();
             ++nContacts;
         }

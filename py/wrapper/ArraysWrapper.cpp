@@ -85,13 +85,12 @@ py::dict interactionArrays() {
     std::vector<Vector3r> fn, fs, normal, point;
     std::vector<Real> depth;
     for (size_t k = 0; k < s.interactions.size(); ++k) {
-        const Interaction* I = s.interactions.object(k);
-        if (!I || !I->isReal()) continue;
-        const auto* g = dynamic_cast<const ScGeom*>(I->geom.get());
-        const auto* p = dynamic_cast<const NormShearPhys*>(I->phys.get());
+        if (!s.interactions.isReal(k)) continue;
+        const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(k));
+        const auto* p = dynamic_cast<const NormShearPhys*>(s.interactions.phys(k));
         if (!g || !p) continue;
-        id1.push_back(I->id1);
-        id2.push_back(I->id2);
+        id1.push_back(s.interactions.pairIds[2 * k]);
+        id2.push_back(s.interactions.pairIds[2 * k + 1]);
         fn.push_back(p->normalForce);
         fs.push_back(p->shearForce);
         normal.push_back(g->normal);

@@ -105,11 +105,38 @@ struct BodyContainerProxy {
     }
 };
 
-// Iteration over O.interactions: the real interactions when the iteration began, one Python
-// object at a time (a list of them all cost as much memory as the contacts themselves).
+// Iteration over O.interactions: the pairs that were real when the iteration began and still
+// exist, one object at a time; an object made for the iteration is dropped when the iteration
+// moves on and Python no longer holds it (objects of all contacts cost as much memory as the
+// contacts themselves).
 struct RealInteractionIterator {
-    std::vector<std::shared_ptr<Interaction>> items;
+    std::vector<std::pair<int, int>> pairs;
     size_t next = 0;
+    long long serial = -1; // the scene's
+    // The objects made for the last two steps (a loop variable still holds the last one when the
+    // next is asked for: `for i in O.interactions` rebinds i after __next__ returns).
+    std::shared_ptr<Interaction> made[2];
+    py::object step() {
+        Scene& s = scene();
+        InteractionContainer& intrs = s.interactions;
+        if (made[0]) {
+            const Interaction* old = made[0].get();
+            made[0].reset();
+            const long k = s.serial == serial ? intrs.findIndex(old->id1, old->id2) : -1;
+            if (k >= 0) intrs.releaseObject((size_t)k, old);
+        }
+        made[0] = std::move(made[1]);
+        while (s.serial == serial && next < pairs.size()) {
+            const long k = intrs.findIndex(pairs[next].first, pairs[next].second);
+            ++next;
+            if (k < 0) continue; // (erased since the iteration began)
+            const bool had = intrs.object((size_t)k) != nullptr;
+            std::shared_ptr<Interaction> I = intrs[(size_t)k];
+            if (!had) made[1] = I;
+            return py::cast(I);
+        }
+        throw py::stop_iteration();
+    }
 };
 
 struct InteractionContainerProxy {
@@ -266,11 +293,7 @@ void bindOmega(py::module_& m) {
             .def("clear", &BodyContainerProxy::clear, "Remove all bodies and interactions");
     py::class_<RealInteractionIterator>(m, "InteractionIterator", "Iterator over the real interactions of O.interactions")
             .def("__iter__", [](RealInteractionIterator& it) -> RealInteractionIterator& { return it; }, py::return_value_policy::reference_internal)
-            .def("__next__", [](RealInteractionIterator& it) {
-                while (it.next < it.items.size() && it.items[it.next]->erased) ++it.next; // (erased since the iteration began)
-                if (it.next >= it.items.size()) throw py::stop_iteration();
-                return std::move(it.items[it.next++]);
-            });
+            .def("__next__", &RealInteractionIterator::step);
     py::class_<InteractionContainerProxy>(m, "InteractionContainer", "O.interactions: interactions indexed by a pair of ids")
             .def("__getitem__", &InteractionContainerProxy::get)
             .def("__len__", &InteractionContainerProxy::len)
@@ -278,8 +301,9 @@ void bindOmega(py::module_& m) {
                     [](InteractionContainerProxy&) {
                         const InteractionContainer& intrs = scene().interactions;
                         RealInteractionIterator it;
+                        it.serial = scene().serial;
                         for (size_t k = 0; k < intrs.size(); ++k)
-                            if (intrs.isReal(k)) it.items.push_back(intrs[k]);
+                            if (intrs.isReal(k)) it.pairs.emplace_back(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1]);
                         return it;
                     },
                     "Iterate over real interactions")
