@@ -31,18 +31,19 @@ void State::setBlockedDOFs(const std::string& dofs) {
 void State::bind(const std::shared_ptr<BodyStore>& s, long id, int bodyMask) {
     if (slot >= 0) unbind();
     if ((size_t)id >= s->size()) s->resize((size_t)id + 1);
-    BodyHot r = local;
+    BodyHot r = *local;
     r.mask = bodyMask;
     r.exists = true;
     s->set((size_t)id, r);
     store = s;
     slot = id;
+    local.reset();
 }
 
 void State::unbind() {
     if (slot < 0) return;
-    local = store->get((size_t)slot);
-    local.exists = false;
+    local = std::make_unique<BodyHot>(store->get((size_t)slot));
+    local->exists = false;
     store->exists[(size_t)slot] = false;
     slot = -1;
 }

@@ -66,8 +66,9 @@ private:
     ClassInfo& insert(const char* name, const char* baseName, const std::type_info& t);
 };
 
-// Classes whose hot attributes live elsewhere while bound: T::hasHotRecord, the members of T::local,
-// and T::hotAddress(offset of the member in local) giving where the value is now.
+// Classes whose hot attributes live elsewhere while bound: T::hasHotRecord, the members of the
+// record T::hotRecord() (of type T::HotRecord) of an unbound object, and T::hotAddress(offset of
+// the member in the record) giving where the value is now.
 template <class T, class = void> struct HasHotRecord : std::false_type {};
 template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>> : std::bool_constant<T::hasHotRecord> {};
 
@@ -84,9 +85,9 @@ template <class T> struct AttrCollector {
         const std::ptrdiff_t offset = reinterpret_cast<char*>(&member) - reinterpret_cast<char*>(&proto);
         a.address = [offset](Serializable& s) -> void* { return reinterpret_cast<char*>(static_cast<T*>(&s)) + offset; };
         if constexpr (HasHotRecord<T>::value) { // a member of the record kept in a store while bound (State)
-            const char* lo = reinterpret_cast<const char*>(&proto.local);
+            const char* lo = reinterpret_cast<const char*>(proto.hotRecord());
             const char* m = reinterpret_cast<const char*>(&member);
-            if (m >= lo && m < lo + sizeof(proto.local)) {
+            if (m >= lo && m < lo + sizeof(typename T::HotRecord)) {
                 const std::ptrdiff_t inRecord = m - lo;
                 a.address = [inRecord](Serializable& s) -> void* { return static_cast<T&>(s).hotAddress(inRecord); };
             }

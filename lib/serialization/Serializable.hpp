@@ -6,7 +6,9 @@
 
 namespace yade {
 
-class Serializable : public std::enable_shared_from_this<Serializable> {
+// (Not enable_shared_from_this: 16 bytes per body and per contact object. Python gets objects
+// through their shared_ptr only, never from a raw pointer.)
+class Serializable {
 public:
     virtual ~Serializable() = default;
     template <class V> void visit(V&) {}

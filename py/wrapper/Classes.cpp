@@ -97,14 +97,17 @@ template <class T, class Base> static py::class_<T, Base, std::shared_ptr<T>> ex
     return py::reinterpret_borrow<py::class_<T, Base, std::shared_ptr<T>>>(py::type::handle_of<T>());
 }
 
-static py::object functorObject(Functor* f) {
-    return f ? py::cast(std::static_pointer_cast<Serializable>(f->shared_from_this())) : py::none();
+// The Python object of functor f of dispatcher d (None for null).
+static py::object functorObject(const Dispatcher& d, const Functor* f) {
+    for (const auto& g : d.functorsBase())
+        if (g.get() == f) return py::cast(std::static_pointer_cast<Serializable>(g));
+    return py::none();
 }
 
 // D.dispFunctor(a, b): the functor a two-argument dispatcher would choose for these objects.
 template <class D, class A, class B> static void bindDispFunctor2D(const char* doc) {
     existing<D, Dispatcher>().def("dispFunctor", [](D& d, std::shared_ptr<A> a, std::shared_ptr<B> b) {
-        return functorObject(a && b ? d.getFunctor(*a, *b).functor : nullptr);
+        return functorObject(d, a && b ? d.getFunctor(*a, *b).functor : nullptr);
     }, doc);
 }
 
@@ -209,7 +212,7 @@ static void bindExtras(py::module_& m) {
     ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<LawDispatcher&>(s), a, "LawDispatcher"); };
 
     existing<BoundDispatcher, Dispatcher>().def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) {
-        return functorObject(s ? d.getFunctor(*s) : nullptr);
+        return functorObject(d, s ? d.getFunctor(*s) : nullptr);
     }, "The functor that would handle this shape (None if none)");
     bindDispFunctor2D<IGeomDispatcher, Shape, Shape>("The functor that would handle this pair of shapes (None if none)");
     bindDispFunctor2D<IPhysDispatcher, Material, Material>("The functor that would handle this pair of materials (None if none)");
