@@ -21,14 +21,41 @@ void IPhysFunctor::go(const std::shared_ptr<Material>&, const std::shared_ptr<Ma
 bool LawFunctor::go(IGeom&, IPhys&, Interaction&) { throw notImplemented(*this); }
 
 // The adapters from the batched forms to the one-contact ones (functors written in that form).
+// The Interaction a one-contact functor gets: the contact's own object when it has one (a
+// Contact made from an Interaction), else a stand-in per thread whose geom and phys are the
+// contact's objects (not owned: they live in a pool record or in the Contact).
+namespace {
+struct StandIn {
+    Interaction& I;
+    bool own;
+    explicit StandIn(const Contact& c) : I(c.I ? *c.I : spare()), own(!c.I) {
+        if (!own) return;
+        I.id1 = c.id1;
+        I.id2 = c.id2;
+        I.geom = std::shared_ptr<IGeom>(std::shared_ptr<IGeom>(), c.geom);
+        I.phys = std::shared_ptr<IPhys>(std::shared_ptr<IPhys>(), c.phys);
+    }
+    ~StandIn() {
+        if (!own) return;
+        I.geom.reset();
+        I.phys.reset();
+    }
+    static Interaction& spare() {
+        thread_local Interaction i;
+        return i;
+    }
+};
+} // namespace
+
 void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* result) {
     const BodyContainer& bodies = scene->bodies;
     for (size_t j = 0; j < n; ++j) {
-        Interaction& i = c[j].interaction();
-        const Body& b1 = *bodies[i.id1];
-        const Body& b2 = *bodies[i.id2];
-        result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, Vector3r::Zero(), false, i);
-        if (i.geom.get() != c[j].geom) c[j].setGeom(i.geom); // (a new one: the record's too)
+        StandIn s(c[j]);
+        const Body& b1 = *bodies[c[j].id1];
+        const Body& b2 = *bodies[c[j].id2];
+        result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, Vector3r::Zero(), false, s.I);
+        if (s.own && s.I.geom.get() != c[j].geom) c[j].setGeom(s.I.geom); // (a new one)
+        else if (!s.own) c[j].geom = s.I.geom.get();
     }
 }
 
@@ -37,7 +64,10 @@ void IGeomFunctor::goBatchWithLaw(const BodyColumns&, Contact*, size_t, LawFunct
 }
 
 void LawFunctor::goBatch(const Contact* c, size_t n, char* keep) {
-    for (size_t j = 0; j < n; ++j) keep[j] = go(*c[j].geom, *c[j].phys, c[j].interaction());
+    for (size_t j = 0; j < n; ++j) {
+        StandIn s(c[j]);
+        keep[j] = go(*c[j].geom, *c[j].phys, s.I);
+    }
 }
 
 void BoundDispatcher::action() {

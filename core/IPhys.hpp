@@ -7,7 +7,14 @@ namespace yade {
 class IPhys : public Serializable {
 public:
     template <class V> void visit(V& v) { Serializable::visit(v); }
+    // The record of a contact this object shows (an object that Python holds while the contact's
+    // values live in a ContactPool), or null: its own members. See lib/factory/ClassRegistry.hpp.
+    Serializable* viewTarget() const { return target; }
+    void setViewTarget(Serializable* t) { target = t; }
     YADE_INDEXABLE_ROOT(IPhys)
+
+private:
+    Serializable* target = nullptr;
 };
 
 } // namespace yade

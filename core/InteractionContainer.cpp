@@ -1,5 +1,6 @@
 #include <core/InteractionContainer.hpp>
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 
@@ -22,6 +23,8 @@ const InteractionContainer::Ptr& InteractionContainer::find(id_t a, id_t b) cons
     const long k = findIndex(a, b);
     return k < 0 ? none : (*this)[(size_t)k];
 }
+
+// ---- records (pairs with an object or with geometry/physics outside a pool)
 
 InteractionContainer::Record& InteractionContainer::ensureRecord(size_t k) const {
     if (recordOf[k] != noRecord) return records[recordOf[k]];
@@ -47,62 +50,213 @@ void InteractionContainer::prepareRecords() {
 void InteractionContainer::freeRecord(size_t k) {
     const uint32_t r = recordOf[k];
     if (r == noRecord) return;
-    Record& rec = records[r];
-    rec = Record();
+    records[r] = Record();
     recordOf[k] = noRecord;
     std::lock_guard<std::mutex> lock(recordsMutex);
     freeRecords.push_back(r);
 }
 
+// ---- pools
+
+ContactPool& InteractionContainer::poolFor(const IGeom& g, const IPhys& p, uint32_t& index) {
+    std::lock_guard<std::mutex> lock(poolsMutex);
+    for (size_t i = 0; i < nPools; ++i)
+        if (pools[i]->geomClass.classIndex == g.getClassIndex() && pools[i]->physClass.classIndex == p.getClassIndex()) {
+            index = (uint32_t)i;
+            return *pools[i];
+        }
+    if (nPools == maxPools) throw std::length_error("more than " + std::to_string(maxPools) + " kinds of contacts (IGeom+IPhys class pairs) in one scene");
+    const ClassRegistry& reg = ClassRegistry::instance();
+    pools[nPools] = std::make_shared<ContactPool>(reg.get(typeid(g)), reg.get(typeid(p)));
+    index = (uint32_t)nPools;
+    return *pools[nPools++];
+}
+
+void InteractionContainer::pointViews(size_t k) {
+    Record* rec = record(k);
+    const uint32_t c = contactOf[k];
+    if (!rec || !rec->object || c == noContact) return;
+    Interaction& I = *rec->object;
+    ContactPool& P = pool(c);
+    const size_t s = slotOf(c);
+    if (!I.geom || I.geom->getClassIndex() != P.geomClass.classIndex) I.geom = std::static_pointer_cast<IGeom>(P.geomClass.factory());
+    if (!I.phys || I.phys->getClassIndex() != P.physClass.classIndex) I.phys = std::static_pointer_cast<IPhys>(P.physClass.factory());
+    I.geom->setViewTarget(P.geom(s));
+    I.phys->setViewTarget(P.phys(s));
+    I.iterMadeReal = P.header(s).iterMadeReal;
+}
+
+void InteractionContainer::detachViews(size_t k) {
+    Record* rec = record(k);
+    const uint32_t c = contactOf[k];
+    if (!rec || !rec->object || c == noContact) return;
+    Interaction& I = *rec->object;
+    ContactPool& P = pool(c);
+    const size_t s = slotOf(c);
+    if (I.geom && I.geom->viewTarget() == P.geom(s)) P.geomClass.assign(*I.geom, *P.geom(s)); // (the values; no target)
+    if (I.phys && I.phys->viewTarget() == P.phys(s)) P.physClass.assign(*I.phys, *P.phys(s));
+}
+
+void InteractionContainer::moved(ContactPool& P, uint32_t index, size_t slot) {
+    const uint32_t k = P.header(slot).k;
+    contactOf[k] = (index << slotBits) | (uint32_t)slot;
+    pointViews(k);
+}
+
+void InteractionContainer::removeContact(size_t k) {
+    const uint32_t c = contactOf[k];
+    if (c == noContact) return;
+    detachViews(k);
+    contactOf[k] = noContact;
+    ContactPool& P = pool(c);
+    if (P.removeAt(slotOf(c))) moved(P, poolOf(c), slotOf(c));
+}
+
+void InteractionContainer::makeContact(size_t k, const std::shared_ptr<IGeom>& g, const std::shared_ptr<IPhys>& p, long long iter) {
+    uint32_t index;
+    ContactPool& P = poolFor(*g, *p, index);
+    const size_t s = P.append(ContactPool::Header{pairIds[2 * k], pairIds[2 * k + 1], (uint32_t)k, 0, iter}, *g, *p);
+    if (s >= (size_t(1) << slotBits)) throw std::length_error("more than 2^26 contacts of one kind");
+    contactOf[k] = (index << slotBits) | (uint32_t)s;
+    if (recordOf[k] == noRecord) return;
+    Record& rec = records[recordOf[k]];
+    rec.geom.reset();
+    rec.phys.reset();
+    if (!rec.object) {
+        freeRecord(k);
+        return;
+    }
+    rec.object->geom = g; // (they become views of the record: Python may hold them)
+    rec.object->phys = p;
+    pointViews(k);
+}
+
+void InteractionContainer::keepGeom(size_t k, std::shared_ptr<IGeom> g) {
+    Record& rec = ensureRecord(k);
+    if (rec.object) rec.object->geom = g;
+    rec.geom = std::move(g);
+}
+
+void InteractionContainer::endContact(size_t k) {
+    const uint32_t c = contactOf[k];
+    if (c != noContact) {
+        detachViews(k);
+        contactOf[k] = noContact;
+        pool(c).markEnded(slotOf(c));
+    }
+    Record* rec = record(k);
+    if (!rec) return;
+    if (rec->object && rec->object.use_count() > 1) { // (Python holds it: it stays, reset)
+        rec->object->reset();
+        rec->geom.reset();
+        rec->phys.reset();
+    } else freeRecord(k); // (its ids are in the columns)
+}
+
+void InteractionContainer::sweep() {
+    for (uint32_t index = 0; index < nPools; ++index) {
+        ContactPool& P = *pools[index];
+        if (P.ended.empty()) continue;
+        std::sort(P.ended.begin(), P.ended.end(), std::greater<uint32_t>()); // (the last record is then never an ended one)
+        for (const uint32_t s : P.ended)
+            if (P.removeAt(s)) moved(P, index, s);
+        P.ended.clear();
+    }
+}
+
+long long InteractionContainer::iterMadeReal(size_t k) const {
+    if (contactOf[k] != noContact) return pool(contactOf[k]).header(slotOf(contactOf[k])).iterMadeReal;
+    const Interaction* I = object(k);
+    return I ? I->iterMadeReal : -1;
+}
+
+// ---- objects
+
 const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) const {
     Record& rec = ensureRecord(k);
     if (!rec.object) {
         rec.object = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
-        rec.object->geom = rec.geom;
-        rec.object->phys = rec.phys;
-        rec.object->iterMadeReal = rec.iterMadeReal;
+        if (contactOf[k] != noContact) const_cast<InteractionContainer*>(this)->pointViews(k);
+        else {
+            rec.object->geom = rec.geom;
+            rec.object->phys = rec.phys;
+        }
         ++objectsMade;
     }
     return rec.object;
 }
 
 InteractionContainer::Ptr InteractionContainer::snapshot(size_t k) const {
-    const Record* rec = record(k);
-    if (rec && rec->object) return rec->object;
+    if (object(k)) return records[recordOf[k]].object;
     auto I = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
-    if (rec) {
+    if (contactOf[k] != noContact) {
+        const ContactPool& P = pool(contactOf[k]);
+        const size_t s = slotOf(contactOf[k]);
+        I->geom = std::static_pointer_cast<IGeom>(P.geomClass.factory());
+        P.geomClass.assign(*I->geom, *P.geom(s));
+        I->phys = std::static_pointer_cast<IPhys>(P.physClass.factory());
+        P.physClass.assign(*I->phys, *P.phys(s));
+        I->iterMadeReal = P.header(s).iterMadeReal;
+    } else if (const Record* rec = record(k)) {
         I->geom = rec->geom;
         I->phys = rec->phys;
-        I->iterMadeReal = rec->iterMadeReal;
     }
     return I;
 }
 
-void InteractionContainer::setGeom(size_t k, std::shared_ptr<IGeom> g) {
-    Record& rec = ensureRecord(k);
-    if (rec.object) rec.object->geom = g;
-    rec.geom = std::move(g);
-    rec.law = nullptr;
-}
-
-void InteractionContainer::setPhys(size_t k, std::shared_ptr<IPhys> p, long long iter) {
-    Record& rec = ensureRecord(k);
-    if (rec.object) {
-        rec.object->phys = p;
-        rec.object->iterMadeReal = iter;
+void InteractionContainer::syncObjects() {
+    for (size_t k = 0; k < size(); ++k) {
+        if (recordOf[k] == noRecord) continue;
+        Interaction* I = records[recordOf[k]].object.get();
+        if (I && contactOf[k] != noContact) {
+            const ContactPool& P = pool(contactOf[k]);
+            const size_t s = slotOf(contactOf[k]);
+            if (!(I->geom && I->geom->viewTarget() == P.geom(s) && I->phys && I->phys->viewTarget() == P.phys(s))) {
+                // Python set geom or phys: the contact leaves the pool with what the object has now
+                const auto g = I->geom;
+                const auto p = I->phys;
+                removeContact(k); // (views of the record left keep its values)
+                Record& rec = records[recordOf[k]];
+                rec.geom = g;
+                rec.phys = p;
+            }
+        } else if (I) {
+            Record& rec = records[recordOf[k]];
+            rec.geom = I->geom;
+            rec.phys = I->phys;
+        }
+        Record& rec = records[recordOf[k]];
+        if (contactOf[k] == noContact && rec.geom && rec.phys) { // a contact set from Python or read from a file
+            const auto g = rec.geom;
+            const auto p = rec.phys;
+            makeContact(k, g, p, I ? I->iterMadeReal : -1);
+        }
+        if (I) releaseObject(k, I);
     }
-    rec.phys = std::move(p);
-    rec.iterMadeReal = iter;
-    rec.law = nullptr;
+    objectsMade = 0;
 }
 
-void InteractionContainer::clearLaws() {
-    for (Record& rec : records) rec.law = nullptr;
+void InteractionContainer::releaseObject(size_t k, const Interaction* which) {
+    Record* rec = record(k);
+    if (!rec || rec->object.get() != which || rec->object.use_count() > 1) return;
+    const Interaction& I = *rec->object;
+    if ((I.geom && I.geom.use_count() > 1) || (I.phys && I.phys.use_count() > 1)) return; // (Python holds a view)
+    if (contactOf[k] == noContact) { // (what Python may have set)
+        rec->geom = I.geom;
+        rec->phys = I.phys;
+    }
+    rec->object.reset();
+    if (!rec->geom && !rec->phys) freeRecord(k);
 }
+
+// ---- pairs
 
 InteractionContainer::~InteractionContainer() {
-    for (const Record& rec : records)
-        if (rec.object) rec.object->erased = true;
+    for (size_t k = 0; k < size(); ++k)
+        if (Interaction* I = object(k)) {
+            detachViews(k);
+            I->erased = true;
+        }
 }
 
 bool InteractionContainer::append(id_t a, id_t b, Ptr I) {
@@ -114,18 +268,18 @@ bool InteractionContainer::append(id_t a, id_t b, Ptr I) {
     const uint32_t k = (uint32_t)size();
     wasReal.push_back(I && I->isReal());
     recordOf.push_back(noRecord);
+    contactOf.push_back(noContact);
     pairIds.push_back(a);
     pairIds.push_back(b);
     partners[a].push_back(Partner{b, k});
     partners[b].push_back(Partner{a, k});
-    if (I) {
-        ++objectsMade;
+    if (I) { // (its geom and phys join a pool at the next syncObjects())
         prepareRecords();
         Record& rec = ensureRecord(k);
         rec.geom = I->geom;
         rec.phys = I->phys;
-        rec.iterMadeReal = I->iterMadeReal;
         rec.object = std::move(I);
+        ++objectsMade;
     }
     ++changes;
     return true;
@@ -165,6 +319,7 @@ bool InteractionContainer::erase(id_t a, id_t b) {
 
 void InteractionContainer::eraseAt(size_t idx) {
     const id_t a = pairIds[2 * idx], b = pairIds[2 * idx + 1];
+    removeContact(idx);
     if (Interaction* I = object(idx)) I->erased = true;
     freeRecord(idx);
     unlinkPartner(a, b);
@@ -172,6 +327,8 @@ void InteractionContainer::eraseAt(size_t idx) {
     const size_t last = size() - 1;
     if (idx != last) { // the last entry fills the hole, with all its columns
         recordOf[idx] = recordOf[last];
+        contactOf[idx] = contactOf[last];
+        if (contactOf[idx] != noContact) pool(contactOf[idx]).header(slotOf(contactOf[idx])).k = (uint32_t)idx;
         pairIds[2 * idx] = pairIds[2 * last];
         pairIds[2 * idx + 1] = pairIds[2 * last + 1];
         wasReal[idx] = wasReal[last];
@@ -179,6 +336,7 @@ void InteractionContainer::eraseAt(size_t idx) {
         relinkPartner(pairIds[2 * idx + 1], (uint32_t)last, (uint32_t)idx);
     }
     recordOf.pop_back();
+    contactOf.pop_back();
     pairIds.resize(2 * last);
     wasReal.pop_back();
     ++changes;
@@ -187,59 +345,28 @@ void InteractionContainer::eraseAt(size_t idx) {
 void InteractionContainer::reserve(size_t n) {
     if (n <= size()) return;
     recordOf.reserve(n);
+    contactOf.reserve(n);
     pairIds.reserve(2 * n);
     wasReal.reserve(n);
 }
 
 void InteractionContainer::clear() {
-    for (const Record& rec : records)
-        if (rec.object) rec.object->erased = true;
+    for (size_t k = 0; k < size(); ++k)
+        if (Interaction* I = object(k)) {
+            detachViews(k);
+            I->erased = true;
+        }
+    for (auto& P : pools) P.reset(); // (a NumPy view may keep one)
+    nPools = 0;
     records.clear();
     records.shrink_to_fit();
     freeRecords.clear();
     recordOf.clear();
+    contactOf.clear();
     pairIds.clear();
     wasReal.clear();
     for (auto& p : partners) p.clear();
     ++changes;
-}
-
-void InteractionContainer::endContact(size_t k) {
-    Record* rec = record(k);
-    if (!rec) return;
-    if (rec->object && rec->object.use_count() > 1) { // (Python holds it: it stays, reset)
-        rec->object->reset();
-        rec->geom.reset();
-        rec->phys.reset();
-        rec->law = nullptr;
-        rec->iterMadeReal = -1;
-    } else freeRecord(k); // (its ids are in the columns)
-}
-
-void InteractionContainer::syncObjects() {
-    for (size_t k = 0; k < size(); ++k) {
-        Record* rec = record(k);
-        if (!rec || !rec->object) continue;
-        const Interaction& I = *rec->object;
-        if (rec->geom != I.geom || rec->phys != I.phys) {
-            rec->geom = I.geom;
-            rec->phys = I.phys;
-            rec->law = nullptr;
-        }
-        rec->iterMadeReal = I.iterMadeReal;
-        releaseObject(k, rec->object.get());
-    }
-    objectsMade = 0;
-}
-
-void InteractionContainer::releaseObject(size_t k, const Interaction* which) {
-    Record* rec = record(k);
-    if (!rec || rec->object.get() != which || rec->object.use_count() > 1) return;
-    rec->geom = rec->object->geom; // (what Python may have set)
-    rec->phys = rec->object->phys;
-    rec->law = nullptr;
-    rec->object.reset();
-    if (!rec->geom && !rec->phys) freeRecord(k);
 }
 
 size_t InteractionContainer::countReal() const {
@@ -265,7 +392,7 @@ Interaction& Contact::interaction() const { return I ? *I : *(*owner)[(size_t)k]
 
 void Contact::setGeom(std::shared_ptr<IGeom> g) {
     geom = g.get();
-    if (owner) owner->setGeom((size_t)k, std::move(g));
+    if (owner) made = std::move(g);
     else I->geom = std::move(g);
 }
 

@@ -1,10 +1,13 @@
-// O.interactions: a flat array of interactions plus, per body, the list of its partners.
-// A potential pair (bounds overlap, no contact yet) is only an entry of the columns: its
-// Interaction object is made when Python or a functor asks for it (most pairs of a dense packing
-// never become contacts, and an object per pair was most of the memory of a large scene).
+// O.interactions: a flat array of pairs (columns indexed by the pair's entry k), per body the list
+// of its partners, and the contacts' geometry and physics in one ContactPool per (IGeom class,
+// IPhys class). A potential pair (bounds overlap, no contact) is only an entry of the columns; an
+// Interaction object exists only while Python holds one (or a file being written needs one), and
+// its geom and phys are then views of the pool's record. Layout and ownership: doc/storage.md.
 #pragma once
+#include <core/ContactPool.hpp>
 #include <core/Interaction.hpp>
 #include <core/LawDispatcher.hpp>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <mutex>
@@ -36,34 +39,53 @@ public:
     void clear();
     size_t size() const { return pairIds.size() / 2; }
     size_t countReal() const;
-    // The object of entry k, made (from the ids and the record) if the pair had none: for Python
-    // and the loader's callers; the engines read the records instead.
+
+    // The object of entry k, made if the pair had none (its geom and phys then show the pool's
+    // record): for Python and functors written in the one-contact form. The engines read the
+    // pools and the columns instead.
     const Ptr& operator[](size_t k) const;
     // The object of entry k, or null: a pair whose object nobody asked for.
     Interaction* object(size_t k) const {
         const Record* r = record(k);
         return r ? r->object.get() : nullptr;
     }
-    // The object of entry k if it has one, else a new one with the same values that the container
-    // does not keep (the writer of saved files: no object is left behind).
+    // The object of entry k if it has one, else a new one with copies of its geometry and physics,
+    // that the container does not keep (the writer of saved files).
     Ptr snapshot(size_t k) const;
-    bool isReal(size_t k) const {
-        const Record* r = record(k);
-        return r && r->geom && r->phys;
-    }
-    // Geometry and physics of entry k (null: none).
+    bool isReal(size_t k) const { return contactOf[k] != noContact || (recordOf[k] != noRecord && unpooledReal(k)); }
+    // Geometry and physics of entry k (null: none): the pool's objects for a contact.
     IGeom* geom(size_t k) const {
+        if (contactOf[k] != noContact) return pool(contactOf[k]).geom(slotOf(contactOf[k]));
         const Record* r = record(k);
         return r ? r->geom.get() : nullptr;
     }
     IPhys* phys(size_t k) const {
+        if (contactOf[k] != noContact) return pool(contactOf[k]).phys(slotOf(contactOf[k]));
         const Record* r = record(k);
         return r ? r->phys.get() : nullptr;
     }
-    // A contact is over (InteractionLoop): back to a potential pair; its object is dropped unless
-    // someone else (Python) holds it, then it is reset.
+    long long iterMadeReal(size_t k) const;
+
+    // The interaction loop's steps for one pair (thread-safe for distinct pairs while the loop runs):
+    // a new geometry made by an Ig2 functor that has no physics yet (kept with the pair)...
+    void keepGeom(size_t k, std::shared_ptr<IGeom> g);
+    // ...a new contact: its geometry and physics are copied into the pool of their classes (an
+    // object Python holds for the pair shows the record from then on);
+    void makeContact(size_t k, const std::shared_ptr<IGeom>& g, const std::shared_ptr<IPhys>& p, long long iter);
+    // ...a contact that is over: back to a potential pair (an object Python holds is reset, and the
+    // geom and phys it showed keep their last values). Its record leaves the pool in sweep().
     void endContact(size_t k);
-    // The objects of one body's interactions that have one (every contact has one).
+    // After the loop's parallel part: the ended contacts' records leave their pools.
+    void sweep();
+    // Before the loop's parallel part: objects Python changed (geom, phys set) or let go.
+    void syncObjects();
+    long long objectsWrites = -1; // externalWrites() at the last syncObjects()
+    mutable std::atomic<size_t> objectsMade{0}; // objects made since the last syncObjects()
+    // Drops the object of pair k if it is `which` and nobody else holds it or its geom and phys:
+    // what iterating O.interactions made is dropped as the iteration moves on.
+    void releaseObject(size_t k, const Interaction* which);
+
+    // The objects of one body's interactions that are real or have one.
     std::vector<Ptr> withBody(id_t id) const;
     // Partners of a body without copying: the other body and the position of the pair.
     struct Partner {
@@ -80,57 +102,57 @@ public:
     }
     void eraseBody(id_t id); // every interaction of this body
 
-    // Columns kept contiguous for the hot loop (entry k): the two ids (authoritative for a pair
-    // without object; the loop swaps them when the Ig2 functor takes the shapes in the other
-    // order), and whether the interaction was real after the last InteractionLoop pass (the loop
-    // keeps it up to date), so that distant potential pairs are skipped without touching objects.
+    // Columns kept contiguous for the hot loop (entry k): the two ids (the loop swaps them when
+    // the Ig2 functor takes the shapes in the other order), and whether the interaction was real
+    // after the last InteractionLoop pass (the loop keeps it up to date), so that distant
+    // potential pairs are skipped without reading anything else.
     std::vector<id_t> pairIds; // 2 per interaction
     std::vector<char> wasReal;
-    // A pair that is a contact, or whose Interaction object someone asked for, has a record: its
-    // geometry and physics (owned here; the object, if any, holds the same ones), the Law2 functor
-    // chosen for them (null: not chosen yet; valid while lawTable is the dispatch table of the loop
-    // that chose it, InteractionLoop clears it else), the step it became real and its object.
-    // Most pairs of a dense packing are potential: they have none (4 bytes instead of a record).
+    // Where a contact's record is: pool index (high bits) and slot, or noContact.
+    static constexpr uint32_t noContact = 0xffffffffu, slotBits = 26, maxPools = 64;
+    std::vector<uint32_t> contactOf;
+    static uint32_t slotOf(uint32_t c) { return c & ((1u << slotBits) - 1); }
+    static uint32_t poolOf(uint32_t c) { return c >> slotBits; }
+    ContactPool& pool(uint32_t c) const { return *pools[poolOf(c)]; }
+    // The pools (null: not made yet); a NumPy view holds its pool.
+    std::array<std::shared_ptr<ContactPool>, maxPools> pools;
+    size_t poolCount() const { return nPools; }
+
+    // A pair whose object Python holds, or that has geometry or physics outside a pool (a new
+    // geometry before its physics, a contact set from Python or read from a file before the loop
+    // takes it), has a record: those objects. Most pairs have none (4 bytes instead).
     struct Record {
-        std::shared_ptr<IGeom> geom;
+        std::shared_ptr<IGeom> geom; // (outside a pool)
         std::shared_ptr<IPhys> phys;
-        LawFunctor* law = nullptr;
         Ptr object;
-        long long iterMadeReal = -1;
     };
     static constexpr uint32_t noRecord = 0xffffffffu;
     mutable std::vector<uint32_t> recordOf; // per pair: its record, or noRecord
     Record* record(size_t k) { return recordOf[k] == noRecord ? nullptr : &records[recordOf[k]]; }
     const Record* record(size_t k) const { return recordOf[k] == noRecord ? nullptr : &records[recordOf[k]]; }
-    // The record of pair k, made if it had none. Thread-safe between prepareRecords() and the next
-    // insert, erase or clear (records never move then): the interaction loop makes them in parallel.
-    Record& ensureRecord(size_t k) const;
-    void prepareRecords(); // room for a record per pair, so that ensureRecord() moves none
-    // A new geometry for pair k (an Ig2 functor's first contact), and the physics (Ip2), kept in
-    // the object too if it has one.
-    void setGeom(size_t k, std::shared_ptr<IGeom> g);
-    void setPhys(size_t k, std::shared_ptr<IPhys> p, long long iter);
-    long long lawTable = -1;
-    void clearLaws(); // every record's Law2 functor
-    // After Python set attributes of objects: their geom and phys become the records'; objects
-    // that only the container holds any more are dropped (the next request makes a new one).
-    void syncObjects();
-    long long objectsWrites = -1; // externalWrites() at the last syncObjects()
-    mutable std::atomic<size_t> objectsMade{0}; // objects made since the last syncObjects()
-    // Drops the object of pair k if it is `which` and nobody else holds it (its geom and phys
-    // kept): what iterating O.interactions made is dropped as the iteration moves on.
-    void releaseObject(size_t k, const Interaction* which);
+    void prepareRecords(); // room for a record per pair, so that the loop makes them without moving any
     // Incremented by every insert, erase and clear (the order of the entries changed).
     long long changes = 0;
 
 private:
-    mutable std::vector<Record> records; // (never shrinks; free ones are listed in freeRecords)
+    mutable std::vector<Record> records; // (free ones are listed in freeRecords)
     mutable std::vector<uint32_t> freeRecords;
-    mutable std::mutex recordsMutex;
+    mutable std::mutex recordsMutex, poolsMutex;
+    size_t nPools = 0;
     std::vector<std::vector<Partner>> partners; // per body
     static const Ptr none;
+    Record& ensureRecord(size_t k) const; // thread-safe after prepareRecords()
+    void freeRecord(size_t k);            // (its object is dropped)
+    bool unpooledReal(size_t k) const {
+        const Record& r = records[recordOf[k]];
+        return r.geom && r.phys;
+    }
+    ContactPool& poolFor(const IGeom& g, const IPhys& p, uint32_t& index); // made if new (thread-safe)
+    void removeContact(size_t k);   // its record leaves the pool now (not while the loop runs)
+    void moved(ContactPool& pool, uint32_t index, size_t slot); // a record moved to `slot`: relink
+    void pointViews(size_t k);      // the object of pair k shows its pool record (if it has one)
+    void detachViews(size_t k);     // ... keeps the record's values instead
     bool append(id_t a, id_t b, Ptr I);
-    void freeRecord(size_t k); // pair k has no record any more (its object is dropped or marked)
     void unlinkPartner(id_t from, id_t other);
     void relinkPartner(id_t from, uint32_t oldK, uint32_t newK);
 };

@@ -5,6 +5,7 @@
 #include <lib/serialization/Serializable.hpp>
 #include <functional>
 #include <map>
+#include <new>
 #include <stdexcept>
 #include <typeindex>
 #include <unordered_map>
@@ -34,6 +35,12 @@ struct ClassInfo {
     size_t ownAttrsBegin = 0;    // attrs[ownAttrsBegin:] are declared by this class itself
     std::string family;          // indexable family root ("Shape", "Material"...), empty if none
     int classIndex = -1;
+    // Objects of the class in memory someone else manages (ContactPool): sizeof, alignof, a copy
+    // constructed at an address, and a copy assigned to an object of the class (set for the
+    // classes with HasViewTarget only: contact geometry and physics).
+    size_t size = 0, align = 0;
+    Serializable* (*copyAt)(void* at, const Serializable& from) = nullptr;
+    void (*assign)(Serializable& to, const Serializable& from) = nullptr;
     const AttrInfo* findAttr(const std::string& n) const {
         for (const auto& a : attrs)
             if (a.name == n) return &a;
@@ -72,6 +79,12 @@ private:
 template <class T, class = void> struct HasHotRecord : std::false_type {};
 template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>> : std::bool_constant<T::hasHotRecord> {};
 
+// Classes whose objects may be views of another object of the same class (a contact's geometry
+// or physics kept in a ContactPool): T::viewTarget() is that object, or null (the object's own
+// members); every attribute is read and written there.
+template <class T, class = void> struct HasViewTarget : std::false_type {};
+template <class T> struct HasViewTarget<T, std::void_t<decltype(std::declval<T&>().viewTarget())>> : std::true_type {};
+
 // Builds the AttrInfo table of class T by visiting a prototype instance.
 template <class T> struct AttrCollector {
     T& proto;
@@ -84,6 +97,11 @@ template <class T> struct AttrCollector {
         a.kind = AttrKindOf<M>::kind;
         const std::ptrdiff_t offset = reinterpret_cast<char*>(&member) - reinterpret_cast<char*>(&proto);
         a.address = [offset](Serializable& s) -> void* { return reinterpret_cast<char*>(static_cast<T*>(&s)) + offset; };
+        if constexpr (HasViewTarget<T>::value)
+            a.address = [offset](Serializable& s) -> void* {
+                Serializable* target = static_cast<T&>(s).viewTarget();
+                return reinterpret_cast<char*>(static_cast<T*>(target ? target : &s)) + offset;
+            };
         if constexpr (HasHotRecord<T>::value) { // a member of the record kept in a store while bound (State)
             const char* lo = reinterpret_cast<const char*>(proto.hotRecord());
             const char* m = reinterpret_cast<const char*>(&member);
@@ -131,6 +149,12 @@ template <class T, class Base> void ClassRegistry::add(const char* name) {
     const bool root = std::is_same_v<T, Base>;
     ClassInfo& info = insert(name, root ? "" : ClassRegistry::get(typeid(Base)).name.c_str(), typeid(T));
     info.factory = [] { return std::static_pointer_cast<Serializable>(std::make_shared<T>()); };
+    info.size = sizeof(T);
+    info.align = alignof(T);
+    if constexpr (HasViewTarget<T>::value) { // (contact geometry and physics: kept in ContactPools)
+        info.copyAt = [](void* at, const Serializable& from) -> Serializable* { return new (at) T(static_cast<const T&>(from)); };
+        info.assign = [](Serializable& to, const Serializable& from) { static_cast<T&>(to) = static_cast<const T&>(from); };
+    }
     T proto;
     AttrCollector<T> collector{proto, info.attrs};
     proto.visit(collector);

@@ -290,11 +290,24 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         if (geomEntry.swap) { // the functor takes the shapes in the other order
             if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
             std::swap(ids[2 * k], ids[2 * k + 1]);
+            if (intrs.contactOf[k] != InteractionContainer::noContact) {
+                ContactPool::Header& h = intrs.pool(intrs.contactOf[k]).header(InteractionContainer::slotOf(intrs.contactOf[k]));
+                std::swap(h.id1, h.id2);
+            }
         }
-        const InteractionContainer::Record* rec = intrs.record((size_t)k);
-        IGeom* geom = rec ? rec->geom.get() : nullptr;
-        IPhys* phys = rec ? rec->phys.get() : nullptr;
-        LawFunctor* law = rec ? rec->law : nullptr;
+        IGeom* geom = nullptr;
+        IPhys* phys = nullptr;
+        LawFunctor* law = nullptr;
+        const uint32_t where = intrs.contactOf[k];
+        if (where != InteractionContainer::noContact) { // a contact: its record in a pool
+            const ContactPool& pool = intrs.pool(where);
+            geom = pool.geom(InteractionContainer::slotOf(where));
+            phys = pool.phys(InteractionContainer::slotOf(where));
+            law = pool.law; // (refreshed before the parallel part; null for a pool made since)
+        } else if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) {
+            geom = rec->geom.get(); // (a geometry kept from an earlier step, without physics)
+            phys = rec->phys.get();
+        }
         // the functors read the contact's objects once the whole batch is gathered: their loads
         // start now, all at once, instead of one contact after the other
         prefetchObject(geom);
@@ -337,6 +350,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 sc.entries[sc.where[m]].geom = nullptr;
                 sc.entries[sc.where[m]].real = sc.flags[m];
                 sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // (a new one, or the same)
+                sc.contacts[sc.where[m]].made = std::move(sc.batch[m].made);
             }
         }
     }
@@ -356,50 +370,58 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         }
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
+            else if (c.made) intrs.keepGeom((size_t)x.k, std::move(c.made)); // (made, yet not a contact)
             setWasReal(intrs, x.k, false);
             continue;
         }
-        InteractionContainer::Record& rec = *intrs.record((size_t)x.k); // (the geometry is there)
-        if (!c.phys) {
+        if (!c.phys) { // a new contact
+            // its geometry: made in this step, or kept from an earlier one
+            std::shared_ptr<IGeom> geom = c.made ? std::move(c.made) : intrs.record((size_t)x.k)->geom;
             const Body& b1 = *bodies[c.id1];
             const Body& b2 = *bodies[c.id2];
-            if (!b1.material || !b2.material) continue;
-            const auto& physEntry = physDispatcher->getFunctor(*b1.material, *b2.material);
-            if (!physEntry.functor) {
+            const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
+            if (!physEntry || !physEntry->functor) {
+                const InteractionContainer::Record* rec = intrs.record((size_t)x.k);
+                if (!rec || rec->geom != geom) intrs.keepGeom((size_t)x.k, geom); // (for the next step)
+                if (physEntry) {
 #pragma omp critical(yadeError)
-                error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
-                        + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
+                    error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
+                            + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
+                }
                 continue;
             }
-            // (the Ip2 functors take an Interaction: the pair's object if Python made one, else
-            // this thread's stand-in, so that no object is made per contact)
-            Interaction& I = rec.object ? *rec.object : sc.standIn;
-            if (&I == &sc.standIn) {
-                I.id1 = c.id1;
-                I.id2 = c.id2;
-                I.geom = rec.geom;
-                I.phys.reset();
-            }
-            physEntry.functor->go(b1.material, b2.material, I);
+            // (the Ip2 functors take an Interaction: this thread's stand-in, so that no object is
+            // made per contact)
+            Interaction& I = sc.standIn;
+            I.id1 = c.id1;
+            I.id2 = c.id2;
+            I.geom = geom;
+            I.phys.reset();
+            physEntry->functor->go(b1.material, b2.material, I);
             std::shared_ptr<IPhys> phys = std::move(I.phys);
-            sc.standIn.geom.reset();
-            c.phys = phys.get();
-            intrs.setPhys((size_t)x.k, std::move(phys), s.iter);
+            I.geom.reset();
+            if (!phys) {
+#pragma omp critical(yadeError)
+                error = physEntry->functor->getClassName() + " made no physics for bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2);
+                continue;
+            }
+            intrs.makeContact((size_t)x.k, geom, phys, s.iter);
+            c.geom = intrs.geom((size_t)x.k);
+            c.phys = intrs.phys((size_t)x.k);
 #pragma omp critical(yadeNewContact)
             {
                 s.newContactBodies.push_back(c.id1);
                 s.newContactBodies.push_back(c.id2);
             }
         }
-        if (!rec.law) { // (chosen once per contact)
-            rec.law = lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
-            if (!rec.law) {
+        const ContactPool& pool = intrs.pool(intrs.contactOf[x.k]);
+        // (the pool's, chosen before the parallel part; for a pool made since, chosen here)
+        x.law = pool.lawTable == lawDispatcher->tableGeneration() ? pool.law : lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
+        if (!x.law) {
 #pragma omp critical(yadeError)
-                error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
-                continue;
-            }
+            error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
+            continue;
         }
-        x.law = rec.law;
         if (live != e) { // (compacted over the entries left out)
             sc.entries[live] = x;
             sc.contacts[live] = c;
@@ -446,11 +468,19 @@ void InteractionLoop::action() {
         intrs.objectsWrites = externalWrites();
         intrs.syncObjects();
     }
-    if (intrs.lawTable != lawDispatcher->tableGeneration()) { // the Law2 functors chosen by another table
-        intrs.clearLaws();
-        intrs.lawTable = lawDispatcher->tableGeneration();
+    for (size_t p = 0; p < intrs.poolCount(); ++p) { // each kind of contact's Law2 functor, for this table
+        ContactPool& pool = *intrs.pools[p];
+        if (pool.lawTable == lawDispatcher->tableGeneration()) continue;
+        pool.law = pool.size() > 0 ? lawDispatcher->getFunctor(*pool.geom(0), *pool.phys(0)).functor : nullptr;
+        pool.lawTable = pool.size() > 0 ? lawDispatcher->tableGeneration() : -1;
     }
-    intrs.prepareRecords(); // (new contacts get their records in parallel)
+    intrs.prepareRecords(); // (the parallel part makes records without moving any)
+    // the records of the contacts that end leave their pools when the parallel part is over (also
+    // when it throws)
+    struct Sweep {
+        InteractionContainer& intrs;
+        ~Sweep() { intrs.sweep(); }
+    } sweepAfter{intrs};
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();

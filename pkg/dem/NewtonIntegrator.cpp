@@ -239,8 +239,8 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
     os.precision(3);
     os << "Simulation unstable at step " << s.iter << ", body #" << id << ": " << what << ". Likely cause: ";
     Real maxOverlap = 0;
-    for (const auto& I : s.interactions.withBody(id))
-        if (const auto* g = dynamic_cast<const ScGeom*>(I->geom.get()))
+    for (const auto& partner : s.interactions.partnersOf(id))
+        if (const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(partner.k)))
             maxOverlap = std::max(maxOverlap, g->penetrationDepth / std::max(std::min(g->refR1 > 0 ? g->refR1 : g->refR2, g->refR2), Real(1e-300)));
     if (std::isfinite(crit.dt) && s.dt > crit.dt)
         os << "O.dt=" << s.dt << " exceeds the critical step " << crit.dt << " of body #" << crit.body
