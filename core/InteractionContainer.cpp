@@ -72,29 +72,43 @@ ContactPool& InteractionContainer::poolFor(const IGeom& g, const IPhys& p, uint3
     return *pools[nPools++];
 }
 
-void InteractionContainer::pointViews(size_t k) {
+void InteractionContainer::makeViews(size_t k) {
     Record* rec = record(k);
     const uint32_t c = contactOf[k];
     if (!rec || !rec->object || c == noContact) return;
     Interaction& I = *rec->object;
     ContactPool& P = pool(c);
     const size_t s = slotOf(c);
-    if (!I.geom || I.geom->getClassIndex() != P.geomClass.classIndex) I.geom = std::static_pointer_cast<IGeom>(P.geomClass.factory());
-    if (!I.phys || I.phys->getClassIndex() != P.physClass.classIndex) I.phys = std::static_pointer_cast<IPhys>(P.physClass.factory());
-    I.geom->setViewTarget(P.geom(s));
-    I.phys->setViewTarget(P.phys(s));
+    // (the object's own geom and phys become the views, unless they are another record's views)
+    const auto usable = [](const auto& x, int classIndex, const void* target) {
+        return x && x->getClassIndex() == classIndex && (!x->viewTarget() || x->viewTarget() == target);
+    };
+    rec->geom = usable(I.geom, P.geomClass.classIndex, P.geom(s)) ? I.geom : std::static_pointer_cast<IGeom>(P.geomClass.factory());
+    rec->phys = usable(I.phys, P.physClass.classIndex, P.phys(s)) ? I.phys : std::static_pointer_cast<IPhys>(P.physClass.factory());
+    I.geom = rec->geom;
+    I.phys = rec->phys;
     I.iterMadeReal = P.header(s).iterMadeReal;
+    pointViews(k);
+}
+
+void InteractionContainer::pointViews(size_t k) {
+    Record* rec = record(k);
+    const uint32_t c = contactOf[k];
+    if (!rec || c == noContact) return;
+    if (rec->geom) rec->geom->setViewTarget(pool(c).geom(slotOf(c)));
+    if (rec->phys) rec->phys->setViewTarget(pool(c).phys(slotOf(c)));
 }
 
 void InteractionContainer::detachViews(size_t k) {
     Record* rec = record(k);
     const uint32_t c = contactOf[k];
-    if (!rec || !rec->object || c == noContact) return;
-    Interaction& I = *rec->object;
+    if (!rec || c == noContact) return;
     ContactPool& P = pool(c);
     const size_t s = slotOf(c);
-    if (I.geom && I.geom->viewTarget() == P.geom(s)) P.geomClass.assign(*I.geom, *P.geom(s)); // (the values; no target)
-    if (I.phys && I.phys->viewTarget() == P.phys(s)) P.physClass.assign(*I.phys, *P.phys(s));
+    if (rec->geom && rec->geom->viewTarget() == P.geom(s)) P.geomClass.assign(*rec->geom, *P.geom(s)); // (the values; no target)
+    if (rec->phys && rec->phys->viewTarget() == P.phys(s)) P.physClass.assign(*rec->phys, *P.phys(s));
+    rec->geom.reset();
+    rec->phys.reset();
 }
 
 void InteractionContainer::moved(ContactPool& P, uint32_t index, size_t slot) {
@@ -106,7 +120,7 @@ void InteractionContainer::moved(ContactPool& P, uint32_t index, size_t slot) {
 void InteractionContainer::removeContact(size_t k) {
     const uint32_t c = contactOf[k];
     if (c == noContact) return;
-    detachViews(k);
+    detachViews(k); // (the object keeps them: geom and phys with the last values)
     contactOf[k] = noContact;
     ContactPool& P = pool(c);
     if (P.removeAt(slotOf(c))) moved(P, poolOf(c), slotOf(c));
@@ -128,7 +142,7 @@ void InteractionContainer::makeContact(size_t k, const std::shared_ptr<IGeom>& g
     }
     rec.object->geom = g; // (they become views of the record: Python may hold them)
     rec.object->phys = p;
-    pointViews(k);
+    makeViews(k);
 }
 
 void InteractionContainer::keepGeom(size_t k, std::shared_ptr<IGeom> g) {
@@ -140,7 +154,7 @@ void InteractionContainer::keepGeom(size_t k, std::shared_ptr<IGeom> g) {
 void InteractionContainer::endContact(size_t k) {
     const uint32_t c = contactOf[k];
     if (c != noContact) {
-        detachViews(k);
+        detachViews(k); // (Python may hold them: they keep the last values)
         contactOf[k] = noContact;
         pool(c).markEnded(slotOf(c));
     }
@@ -176,7 +190,7 @@ const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) cons
     Record& rec = ensureRecord(k);
     if (!rec.object) {
         rec.object = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
-        if (contactOf[k] != noContact) const_cast<InteractionContainer*>(this)->pointViews(k);
+        if (contactOf[k] != noContact) const_cast<InteractionContainer*>(this)->makeViews(k);
         else {
             rec.object->geom = rec.geom;
             rec.object->phys = rec.phys;
@@ -209,16 +223,14 @@ void InteractionContainer::syncObjects() {
         if (recordOf[k] == noRecord) continue;
         Interaction* I = records[recordOf[k]].object.get();
         if (I && contactOf[k] != noContact) {
-            const ContactPool& P = pool(contactOf[k]);
-            const size_t s = slotOf(contactOf[k]);
-            if (!(I->geom && I->geom->viewTarget() == P.geom(s) && I->phys && I->phys->viewTarget() == P.phys(s))) {
+            const Record& rec = records[recordOf[k]];
+            if (I->geom != rec.geom || I->phys != rec.phys) {
                 // Python set geom or phys: the contact leaves the pool with what the object has now
-                const auto g = I->geom;
-                const auto p = I->phys;
-                removeContact(k); // (views of the record left keep its values)
-                Record& rec = records[recordOf[k]];
-                rec.geom = g;
-                rec.phys = p;
+                // (the views it had keep the values of the record)
+                removeContact(k);
+                Record& r = records[recordOf[k]];
+                r.geom = I->geom;
+                r.phys = I->phys;
             }
         } else if (I) {
             Record& rec = records[recordOf[k]];
@@ -240,11 +252,14 @@ void InteractionContainer::releaseObject(size_t k, const Interaction* which) {
     Record* rec = record(k);
     if (!rec || rec->object.get() != which || rec->object.use_count() > 1) return;
     const Interaction& I = *rec->object;
-    if ((I.geom && I.geom.use_count() > 1) || (I.phys && I.phys.use_count() > 1)) return; // (Python holds a view)
-    if (contactOf[k] == noContact) { // (what Python may have set)
-        rec->geom = I.geom;
-        rec->phys = I.phys;
+    if (contactOf[k] != noContact) { // (its geom and phys are views, held by the object and the record)
+        if (I.geom != rec->geom || I.phys != rec->phys || rec->geom.use_count() > 2 || rec->phys.use_count() > 2) return; // (Python holds a view, or set others)
+        freeRecord(k);
+        return;
     }
+    if ((I.geom && I.geom.use_count() > 1) || (I.phys && I.phys.use_count() > 1)) return; // (Python holds them)
+    rec->geom = I.geom; // (what Python may have set)
+    rec->phys = I.phys;
     rec->object.reset();
     if (!rec->geom && !rec->phys) freeRecord(k);
 }

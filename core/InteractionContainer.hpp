@@ -122,7 +122,7 @@ public:
     // geometry before its physics, a contact set from Python or read from a file before the loop
     // takes it), has a record: those objects. Most pairs have none (4 bytes instead).
     struct Record {
-        std::shared_ptr<IGeom> geom; // (outside a pool)
+        std::shared_ptr<IGeom> geom; // outside a pool, or the object's views of the pool record
         std::shared_ptr<IPhys> phys;
         Ptr object;
     };
@@ -150,8 +150,12 @@ private:
     ContactPool& poolFor(const IGeom& g, const IPhys& p, uint32_t& index); // made if new (thread-safe)
     void removeContact(size_t k);   // its record leaves the pool now (not while the loop runs)
     void moved(ContactPool& pool, uint32_t index, size_t slot); // a record moved to `slot`: relink
-    void pointViews(size_t k);      // the object of pair k shows its pool record (if it has one)
-    void detachViews(size_t k);     // ... keeps the record's values instead
+    // The views of a contact's record (the geom and phys of its object) are kept in its Record
+    // (geom, phys), so that they can be pointed at the record when it moves and detached when it
+    // leaves, also after Python gave the object other ones.
+    void makeViews(size_t k);   // the object of pair k gets views of its pool record
+    void pointViews(size_t k);  // the views follow the record to its (new) slot
+    void detachViews(size_t k); // the views keep the record's values, and it no longer has any
     bool append(id_t a, id_t b, Ptr I);
     void unlinkPartner(id_t from, id_t other);
     void relinkPartner(id_t from, uint32_t oldK, uint32_t newK);

@@ -7,6 +7,7 @@
 #include <pkg/dem/ScGeom.hpp>
 #include <py/wrapper/ArraysWrapper.hpp>
 #include <pybind11/numpy.h>
+#include <algorithm>
 
 namespace py = pybind11;
 
@@ -78,19 +79,58 @@ BodyArrays bodyArrays() {
     return r;
 }
 
-// Real interactions whose geometry is a ScGeom and physics a NormShearPhys (the others are left out).
+// An n × columns array of doubles (columns = 0: a vector) or a vector of ints, `stride` bytes
+// from one row to the next, over a pool's records (read-only).
+py::array rowsOf(const void* first, size_t n, size_t columns, size_t stride, bool ints, const py::capsule& owner) {
+    std::vector<py::ssize_t> shape{(py::ssize_t)n}, strides{(py::ssize_t)stride};
+    if (columns) {
+        shape.push_back((py::ssize_t)columns);
+        strides.push_back((py::ssize_t)sizeof(Real));
+    }
+    py::array a(ints ? py::dtype::of<int>() : py::dtype::of<Real>(), shape, strides, first, owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+// The real contacts whose geometry is a ScGeom and physics a NormShearPhys (the others are left
+// out). When they are all of one kind (one ContactPool), views of the pool's records; else copies.
 py::dict interactionArrays() {
     Scene& s = omega().scene();
+    const InteractionContainer& intrs = s.interactions;
+    const ContactPool* only = nullptr;
+    size_t pools = 0;
+    for (size_t p = 0; p < intrs.poolCount(); ++p)
+        if (intrs.pools[p]->size() > 0) {
+            only = intrs.pools[p].get();
+            ++pools;
+        }
+    const ScGeom* g0 = only ? dynamic_cast<const ScGeom*>(only->geom(0)) : nullptr;
+    const NormShearPhys* p0 = only ? dynamic_cast<const NormShearPhys*>(only->phys(0)) : nullptr;
+    py::dict d;
+    if (pools == 1 && g0 && p0 && intrs.countReal() == only->size()) { // views
+        const std::shared_ptr<ContactPool> pool = intrs.pools[std::find_if(intrs.pools.begin(), intrs.pools.end(), [&](const auto& p) { return p.get() == only; }) - intrs.pools.begin()];
+        const py::capsule owner(new std::shared_ptr<ContactPool>(pool), [](void* p) { delete static_cast<std::shared_ptr<ContactPool>*>(p); });
+        const size_t n = only->size(), stride = only->stride;
+        const ContactPool::Header& h = only->header(0);
+        d["id1"] = rowsOf(&h.id1, n, 0, stride, true, owner);
+        d["id2"] = rowsOf(&h.id2, n, 0, stride, true, owner);
+        d["normalForce"] = rowsOf(p0->normalForce.data(), n, 3, stride, false, owner);
+        d["shearForce"] = rowsOf(p0->shearForce.data(), n, 3, stride, false, owner);
+        d["normal"] = rowsOf(g0->normal.data(), n, 3, stride, false, owner);
+        d["contactPoint"] = rowsOf(g0->contactPoint.data(), n, 3, stride, false, owner);
+        d["penetrationDepth"] = rowsOf(&g0->penetrationDepth, n, 0, stride, false, owner);
+        return d;
+    }
     std::vector<int> id1, id2;
     std::vector<Vector3r> fn, fs, normal, point;
     std::vector<Real> depth;
-    for (size_t k = 0; k < s.interactions.size(); ++k) {
-        if (!s.interactions.isReal(k)) continue;
-        const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(k));
-        const auto* p = dynamic_cast<const NormShearPhys*>(s.interactions.phys(k));
+    for (size_t k = 0; k < intrs.size(); ++k) {
+        if (!intrs.isReal(k)) continue;
+        const auto* g = dynamic_cast<const ScGeom*>(intrs.geom(k));
+        const auto* p = dynamic_cast<const NormShearPhys*>(intrs.phys(k));
         if (!g || !p) continue;
-        id1.push_back(s.interactions.pairIds[2 * k]);
-        id2.push_back(s.interactions.pairIds[2 * k + 1]);
+        id1.push_back(intrs.pairIds[2 * k]);
+        id2.push_back(intrs.pairIds[2 * k + 1]);
         fn.push_back(p->normalForce);
         fs.push_back(p->shearForce);
         normal.push_back(g->normal);
@@ -104,7 +144,6 @@ py::dict interactionArrays() {
             for (int c = 0; c < 3; ++c) m(i, c) = v[i][c];
         return a;
     };
-    py::dict d;
     d["id1"] = py::array_t<int>((py::ssize_t)id1.size(), id1.data());
     d["id2"] = py::array_t<int>((py::ssize_t)id2.size(), id2.data());
     d["normalForce"] = vectors(fn);
@@ -143,7 +182,12 @@ the view is taken. While a view of pos is alive the engine does not rely on posi
                     "NumPy views of the bodies' state (a BodyArrays: pos, vel, angVel, ori, mass, inertia, force, torque, radius, exists); see help(BodyArrays) for how long they stay valid"));
     py::setattr(interactionsClass, "arrays",
             py::cpp_function([](py::object) { return interactionArrays(); }, py::is_method(interactionsClass), py::name("arrays"),
-                    "The real contacts (ScGeom + NormShearPhys) as a dict of NumPy arrays, copies taken now: id1, id2, normalForce, shearForce, normal, contactPoint, penetrationDepth (row i is one contact; forces are those on body 2)"));
+                    "The real contacts (ScGeom + NormShearPhys) as a dict of read-only NumPy arrays: id1, id2, normalForce, shearForce, "
+                    "normal, contactPoint, penetrationDepth (row i is one contact; forces are those on body 2). When all real contacts are "
+                    "of one kind (one IGeom and one IPhys class: the usual case), these are views of the engine's contact records, "
+                    "not copies: they show the current values until the set of contacts changes (the next step, or an insert or erase: "
+                    "contacts that end are replaced by others in their rows, new ones are not in the view), and stay valid memory as long "
+                    "as they live; take new ones after each step. With several kinds of contacts they are copies taken now."));
 }
 
 } // namespace yade
