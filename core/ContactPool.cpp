@@ -1,4 +1,5 @@
 #include <core/ContactPool.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 namespace yade {
@@ -13,9 +14,9 @@ ContactPool::ContactPool(const ClassInfo& geom, const ClassInfo& phys) : geomCla
     if (!geom.copyAt || !geom.assign || !phys.copyAt || !phys.assign)
         throw std::logic_error("ContactPool: " + geom.name + " and " + phys.name + " must be copyable");
     if (geom.align > 16 || phys.align > 16) throw std::logic_error("ContactPool: alignment above 16 bytes");
-    geomOffset = roundUp(sizeof(Header), 16);
-    physOffset = geomOffset + roundUp(geom.size, 16);
-    stride = physOffset + roundUp(phys.size, 16);
+    geomOffset = roundUp(sizeof(Header), geom.align);
+    physOffset = roundUp(geomOffset + geom.size, phys.align);
+    stride = roundUp(physOffset + phys.size, std::max<size_t>({alignof(Header), geom.align, phys.align}));
     base = reinterpret_cast<char*>(memory.data());
 }
 
@@ -47,7 +48,7 @@ size_t ContactPool::append(const Header& h, const IGeom& g, const IPhys& p) {
     {
         std::lock_guard<std::mutex> lock(mutex);
         slot = count;
-        memory.resize((slot + 1) * stride / sizeof(Block));
+        memory.resize(((slot + 1) * stride + sizeof(Block) - 1) / sizeof(Block));
         ++count; // (the record is built below, outside the lock: nobody else reads it yet)
     }
     header(slot) = h;

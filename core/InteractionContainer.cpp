@@ -365,6 +365,12 @@ void InteractionContainer::reserve(size_t n) {
     wasReal.reserve(n);
 }
 
+void InteractionContainer::reservePartners(const std::vector<uint32_t>& more) {
+    resizeBodies(more.size());
+    for (size_t id = 0; id < more.size(); ++id)
+        if (more[id]) partners[id].reserve(partners[id].size() + more[id]);
+}
+
 void InteractionContainer::clear() {
     for (size_t k = 0; k < size(); ++k)
         if (Interaction* I = object(k)) {

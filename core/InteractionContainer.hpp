@@ -36,6 +36,9 @@ public:
     // growing the columns one push_back at a time held up to twice their size, and the old and
     // new arrays at once while they moved).
     void reserve(size_t n);
+    // Room for more[id] more partners of each body (a collider that knows: lists grown one
+    // push_back at a time took a third more memory).
+    void reservePartners(const std::vector<uint32_t>& more);
     void clear();
     size_t size() const { return pairIds.size() / 2; }
     size_t countReal() const;

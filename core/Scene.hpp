@@ -46,7 +46,7 @@ public:
         std::vector<Vector3r> pos;
         long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
         Real maxStep = Inf;
-        std::vector<Vector3r> reference;
+        std::shared_ptr<const std::vector<Vector3r>> reference;
         long long referenceTag = -1, maxMovedTag = -1;
         Real maxMoved2 = NaN;
     } positionMirror;

@@ -164,6 +164,12 @@ void InsertionSortCollider::rebuild() {
     // the container's columns are then read in order too
     std::sort(added.begin(), added.end());
     intrs.reserve(intrs.size() + added.size());
+    std::vector<uint32_t> perBody(bodies.size(), 0); // (each body's partner list grows once, to its size)
+    for (const auto& p : added) {
+        ++perBody[p.first];
+        ++perBody[p.second];
+    }
+    intrs.reservePartners(perBody);
     for (const auto& p : added) intrs.insertPotential(p.first, p.second);
 }
 

@@ -5,6 +5,8 @@
 #include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 #ifdef _OPENMP
@@ -89,6 +91,7 @@ bool InteractionLoop::prepareQuickReject() {
     quickFromMirror = !cacheBuilt && scene->positionsCurrent();
     if (quickFromMirror) { // shapes unchanged: the integrator's positions
         shapePos = scene->positionMirror.pos.data();
+        if (!quickPos.empty()) std::vector<Vector3r>().swap(quickPos); // (the usual case: not kept)
     } else { // from the bodies' records
         quickPos.resize(n);
         const BodyStore& hot = bodies.hot();
@@ -113,21 +116,21 @@ void InteractionLoop::prepareSkin(bool quick) {
         return;
     }
     const size_t n = shapeCache.radius.size();
-    const bool keep = quickFromMirror && skin.pairsBuild == threadPairsBuild && skin.refPos.size() == n
+    const bool keep = quickFromMirror && skin.pairsBuild == threadPairsBuild && skin.refPos->size() == n
             && skin.facetPlanes == facetPlanes && skin.sphereSphereReach == sphereSphereReach && skin.facetSphereReach == facetSphereReach;
     skin.active = true;
     if (keep) return;
     // a new epoch: positions now are the reference; every pair is tested in this step
     skin.fresh = true;
-    skin.refPos.assign(shapePos, shapePos + n);
-    // the integrator measures D from a copy of them (a tag unique to this epoch of this loop)
+    skin.refPos = std::make_shared<const std::vector<Vector3r>>(shapePos, shapePos + n);
+    // the integrator measures D from them too (a tag unique to this epoch of this loop)
     static std::atomic<long long> epochs{0};
     skin.tag = ++epochs;
     scene->positionMirror.reference = skin.refPos;
     scene->positionMirror.referenceTag = skin.tag;
     Real scale = 0;
     for (size_t id = 0; id < n; ++id) {
-        const Real extent = skin.refPos[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
+        const Real extent = (*skin.refPos)[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
         if (extent > scale) scale = extent; // (NaN: ignored)
     }
     skin.tolerance = 1e-11 * scale;
@@ -145,6 +148,13 @@ void InteractionLoop::prepareSkin(bool quick) {
 // A sphere whose center is out of reach of a facet's plane. The functor computes the distance in
 // the facet's frame, this in global coordinates: a relative margin of 1e-12 for the rounding
 // leaves the borderline cases to the functor.
+// x as a float not above it: the skin's gaps are kept in floats (half the memory), and a gap
+// rounded down only makes a pair tested a step earlier, never skipped when it should not be.
+static inline float floatBelow(Real x) {
+    const float f = (float)x;
+    return (Real)f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
 bool InteractionLoop::facetSphereReject(Body::id_t sphere, Real facetCode, Real& gap) const {
     const Real radius = shapeRadius[sphere];
     if (facetSphereReach <= 0 || !(radius > 0) || !(facetCode < 0)) return false;
@@ -223,6 +233,10 @@ void InteractionLoop::assignPairsToThreads(int threads) {
         for (uint32_t k : list) sorted[start[std::min(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])]++] = k;
         list.swap(sorted);
     }
+    // (the per-pair scratch is not kept: in a dense packing it was 8 bytes per pair, 5 MB at 50 000
+    // spheres; the lists are rebuilt only when the pairs change)
+    std::vector<uint32_t>().swap(sorted);
+    std::vector<int>().swap(fixed);
     threadPairsFor = intrs.changes;
     threadPairsScene = scene->serial;
     threadPairsBodies = (size_t)nBodies;
@@ -247,7 +261,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     Scene& s = *scene;
     InteractionContainer& intrs = s.interactions;
     const std::vector<uint32_t>& pairs = threadPairs[list];
-    Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    float* gaps = skin.active ? skin.gap[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
     const bool fuse = fusedPasses;
     const int* shapeIndex = shapeCache.shapeIndex.data();
@@ -270,7 +284,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         const long k = pairs[i];
         Real gap;
         if (quick && !intrs.wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
-            if (gaps) gaps[i] = gap - twiceD;
+            if (gaps) gaps[i] = floatBelow(gap - twiceD);
             continue; // still apart
         }
         if (gaps) gaps[i] = -Inf; // tested again at the next step
@@ -492,7 +506,7 @@ void InteractionLoop::action() {
             || threadPairsCount != intrs.size() || (int)threadPairs.size() != threads)
         assignPairsToThreads(threads);
     prepareSkin(quick);
-    const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos.data() : nullptr; // (D = 0 in a fresh epoch)
+    const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)
     Real displacement2 = 0; // D²
     const Scene::PositionMirror& mirror = s.positionMirror;
     if (skinRef && quickFromMirror && mirror.maxMovedTag == skin.tag && mirror.referenceTag == skin.tag) { // found by the integrator with these positions
@@ -537,7 +551,7 @@ void InteractionLoop::action() {
         // the entries to test: all, or with the skin those not certainly beyond reach since their
         // last test (gathered without branches: which ones are skipped is unpredictable)
         const std::vector<uint32_t>& pairs = threadPairs[list];
-        const Real* gaps = skin.active ? skin.gap[list].data() : nullptr;
+        const float* gaps = skin.active ? skin.gap[list].data() : nullptr;
         ListWork& w = *work[list];
         w.count = pairs.size();
         w.todo = nullptr;

@@ -95,8 +95,9 @@ private:
     // positions. An epoch ends when the interactions, the bodies, anything written from Python,
     // a facet's plane or the functors' reach change.
     struct Skin {
-        std::vector<Vector3r> refPos;        // each body's position at the start of the epoch
-        std::vector<std::vector<Real>> gap;  // per thread list, per entry: g - 2D (-Inf: test the pair)
+        // each body's position at the start of the epoch (shared with Scene::positionMirror.reference)
+        std::shared_ptr<const std::vector<Vector3r>> refPos = std::make_shared<std::vector<Vector3r>>();
+        std::vector<std::vector<float>> gap; // per thread list, per entry: g - 2D (-Inf: test the pair), rounded down
         std::vector<std::vector<unsigned>> todo; // per thread list: the entries tested in this step
         // Per thread list, the entries whose value was at most nearLimit at the last full pass over
         // the list (the others were not tested since, so their values did not change): while the

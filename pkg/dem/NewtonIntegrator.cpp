@@ -81,7 +81,8 @@ void NewtonIntegrator::action() {
     const BodyStore::Columns hot = s.bodies.hot().columns();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
-    const Vector3r* reference = (long)s.positionMirror.reference.size() == n ? s.positionMirror.reference.data() : nullptr;
+    const auto& ref = s.positionMirror.reference;
+    const Vector3r* reference = ref && (long)ref->size() == n ? ref->data() : nullptr;
     Real maxMoved2 = 0;
     // With several threads a thread that is done helps with the others' last bodies (on shared
     // machines a core is often slower than the other for a while); the energy terms are then
