@@ -126,3 +126,15 @@ def test_erase_and_save_load_of_pooled_contacts(tmp_path):
     assert {p: i.geom.penetrationDepth for p, i in contacts().items()} == depths
     O.step()
     assert O.interactions.countReal() >= 4
+
+
+def test_vectors_of_a_contacts_views_are_copies_that_outlive_the_records():
+    """(minieigen views into a record would show another contact once it moves, and freed memory
+    once the pools are gone)"""
+    row(3)
+    g = O.interactions[0, 1].geom
+    n = g.normal
+    n[0] = 5  # a copy: the contact is unchanged
+    assert g.normal[0] != 5
+    O.reset()
+    assert n[0] == 5 and abs(g.normal.norm() - 1) < 1e-12  # (detached: its last values)

@@ -1,3 +1,5 @@
+#include <core/IGeom.hpp>
+#include <core/IPhys.hpp>
 #include <lib/base/ExternalWrites.hpp>
 #include <cmath>
 #include <limits>
@@ -43,8 +45,19 @@ template <class T> static py::object view(T* p, py::handle owner) {
     return py::cast(p, py::return_value_policy::reference_internal, owner);
 }
 
+// A contact's geometry or physics that shows a record of a ContactPool (doc/storage.md): its
+// vectors are given as copies, since a record moves when another contact ends.
+static bool isViewOfRecord(const Serializable& s) {
+    if (const auto* g = dynamic_cast<const IGeom*>(&s)) return g->viewTarget() != nullptr;
+    if (const auto* p = dynamic_cast<const IPhys*>(&s)) return p->viewTarget() != nullptr;
+    return false;
+}
+
+static py::object copyOf(Serializable& s, const AttrInfo& a);
+
 py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
     void* p = a.address(s);
+    if (!owner.is_none() && isViewOfRecord(s)) return copyOf(s, a);
     switch (a.kind) {
         case AttrKind::Bool: return py::cast(*static_cast<bool*>(p));
         case AttrKind::Int: return py::cast(*static_cast<int*>(p));
