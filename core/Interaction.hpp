@@ -41,7 +41,7 @@ public:
 // One interaction as the batched functors see it (IGeomFunctorBatched, LawFunctorBatched): its
 // geometry and physics objects (a contact's are in its ContactPool record) and the two ids, read
 // from InteractionContainer's columns; the Interaction object is not touched (a pair has one only
-// while Python holds it). A geometry made by an Ig2 functor for a new contact is kept in `made`
+// while Python holds it). A geometry made by an Ig2 functor for a new contact is kept in *made
 // until the loop has its physics and moves both into a pool.
 class InteractionContainer;
 struct Contact {
@@ -51,7 +51,7 @@ struct Contact {
     IGeom* geom = nullptr;
     IPhys* phys = nullptr;
     Body::id_t id1 = -1, id2 = -1;
-    std::shared_ptr<IGeom> made;
+    std::shared_ptr<IGeom>* made = nullptr; // where a new geometry goes (the loop's scratch)
     bool isReal() const { return geom && phys; }
     Interaction& interaction() const; // (InteractionContainer.cpp)
     Contact() = default;

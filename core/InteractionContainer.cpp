@@ -413,7 +413,8 @@ Interaction& Contact::interaction() const { return I ? *I : *(*owner)[(size_t)k]
 
 void Contact::setGeom(std::shared_ptr<IGeom> g) {
     geom = g.get();
-    if (owner) made = std::move(g);
+    if (made) *made = std::move(g);
+    else if (owner) owner->keepGeom((size_t)k, std::move(g));
     else I->geom = std::move(g);
 }
 

@@ -271,9 +271,15 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     if (sc.entries.size() < batchEntries) {
         sc.entries.resize(batchEntries);
         sc.contacts.resize(batchEntries);
+        sc.made.resize(batchEntries);
     }
     size_t n = 0;
     sc.oneGeomFunctor = true;
+    // (raw pointers: through the containers each access would reload them)
+    const uint32_t* contactOf = intrs.contactOf.data();
+    std::shared_ptr<IGeom>* made = sc.made.data();
+    uint32_t lastPoolIndex = InteractionContainer::noContact;
+    const ContactPool* lastPool = nullptr;
     // the dispatch entry of the last shape-class pair (consecutive pairs are mostly of one kind)
     int lastC1 = -1, lastC2 = -1;
     const DispatchTable2D<IGeomFunctor>::Entry* lastEntry = nullptr;
@@ -311,12 +317,15 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         IGeom* geom = nullptr;
         IPhys* phys = nullptr;
         LawFunctor* law = nullptr;
-        const uint32_t where = intrs.contactOf[k];
+        const uint32_t where = contactOf[k];
         if (where != InteractionContainer::noContact) { // a contact: its record in a pool
-            const ContactPool& pool = intrs.pool(where);
-            geom = pool.geom(InteractionContainer::slotOf(where));
-            phys = pool.phys(InteractionContainer::slotOf(where));
-            law = pool.law; // (refreshed before the parallel part; null for a pool made since)
+            if (InteractionContainer::poolOf(where) != lastPoolIndex) { // (mostly all of one kind)
+                lastPoolIndex = InteractionContainer::poolOf(where);
+                lastPool = intrs.pools[lastPoolIndex].get();
+            }
+            geom = lastPool->geom(InteractionContainer::slotOf(where));
+            phys = lastPool->phys(InteractionContainer::slotOf(where));
+            law = lastPool->law; // (refreshed before the parallel part; null for a pool made since)
         } else if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) {
             geom = rec->geom.get(); // (a geometry kept from an earlier step, without physics)
             phys = rec->phys.get();
@@ -338,6 +347,8 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         sc.oneGeomFunctor &= !fused && (n == 0 || sc.entries[0].geom == geomEntry.functor);
         sc.entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
         sc.contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
+        sc.contacts[n].made = made + n;
+        if (made[n]) made[n].reset(); // (left by a step that threw)
         ++n;
     }
     if (n == 0) return;
@@ -363,7 +374,6 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
                 sc.entries[sc.where[m]].geom = nullptr;
                 sc.entries[sc.where[m]].real = sc.flags[m];
                 sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // (a new one, or the same)
-                sc.contacts[sc.where[m]].made = std::move(sc.batch[m].made);
             }
         }
     }
@@ -383,13 +393,13 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         }
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
-            else if (c.made) intrs.keepGeom((size_t)x.k, std::move(c.made)); // (made, yet not a contact)
+            else if (*c.made) intrs.keepGeom((size_t)x.k, std::move(*c.made)); // (made, yet not a contact)
             setWasReal(intrs, x.k, false);
             continue;
         }
         if (!c.phys) { // a new contact
             // its geometry: made in this step, or kept from an earlier one
-            std::shared_ptr<IGeom> geom = c.made ? std::move(c.made) : intrs.record((size_t)x.k)->geom;
+            std::shared_ptr<IGeom> geom = *c.made ? std::move(*c.made) : intrs.record((size_t)x.k)->geom;
             const Body& b1 = *bodies[c.id1];
             const Body& b2 = *bodies[c.id2];
             const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
