@@ -50,6 +50,7 @@ size_t ContactPool::append(const Header& h, const IGeom& g, const IPhys& p) {
         slot = count;
         memory.resize(((slot + 1) * stride + sizeof(Block) - 1) / sizeof(Block));
         ++count; // (the record is built below, outside the lock: nobody else reads it yet)
+        ++appendsSinceOrder;
     }
     header(slot) = h;
     construct(slot, g, p);
@@ -60,6 +61,41 @@ void ContactPool::markEnded(size_t slot) {
     header(slot).ended = 1;
     std::lock_guard<std::mutex> lock(mutex);
     ended.push_back((uint32_t)slot);
+}
+
+void ContactPool::relocate(char* to, char* from) {
+    *reinterpret_cast<Header*>(to) = *reinterpret_cast<Header*>(from);
+    IGeom* g = reinterpret_cast<IGeom*>(from + geomOffset);
+    IPhys* p = reinterpret_cast<IPhys*>(from + physOffset);
+    geomClass.copyAt(to + geomOffset, *g);
+    physClass.copyAt(to + physOffset, *p);
+    g->~IGeom();
+    p->~IPhys();
+}
+
+void ContactPool::permute(const std::vector<uint32_t>& to) {
+    if (to.size() != count) throw std::logic_error("ContactPool::permute: wrong size");
+    std::vector<uint32_t> from(count);
+    for (size_t s = 0; s < count; ++s) from[to[s]] = (uint32_t)s;
+    std::vector<Block> spare(stride / sizeof(Block) + 1); // (one record, while a cycle moves)
+    char* tmp = reinterpret_cast<char*>(spare.data());
+    std::vector<char> done(count, 0);
+    for (size_t s = 0; s < count; ++s) { // each cycle of the permutation, through one spare record
+        if (done[s] || from[s] == s) continue;
+        relocate(tmp, record(s));
+        size_t j = s;
+        for (;;) {
+            done[j] = 1;
+            const size_t i = from[j]; // the record that goes to slot j
+            if (i == s) {
+                relocate(record(j), tmp);
+                break;
+            }
+            relocate(record(j), record(i));
+            j = i;
+        }
+    }
+    appendsSinceOrder = 0;
 }
 
 bool ContactPool::removeAt(size_t slot) {

@@ -46,6 +46,9 @@ public:
     size_t append(const Header& h, const IGeom& g, const IPhys& p);
     // Removes record `slot`: the last one moves into it; true if one moved. Not thread-safe.
     bool removeAt(size_t slot);
+    // Moves record s to slot to[s] for every s (a permutation of 0 .. size()-1). Not thread-safe.
+    void permute(const std::vector<uint32_t>& to);
+    size_t appendsSinceOrder = 0; // records appended since the last permute()
     // Slots of the contacts that ended while the loop ran (removed afterwards, InteractionContainer::sweep).
     std::vector<uint32_t> ended;
     void markEnded(size_t slot);
@@ -66,6 +69,7 @@ private:
     std::mutex mutex; // appends and markEnded
     void construct(size_t slot, const IGeom& g, const IPhys& p);
     void destroy(size_t slot);
+    void relocate(char* to, char* from); // a record's objects and header from one place to another
 };
 
 } // namespace yade

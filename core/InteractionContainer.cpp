@@ -178,6 +178,22 @@ void InteractionContainer::sweep() {
     }
 }
 
+void InteractionContainer::orderPools(const std::vector<std::vector<uint32_t>>& lists) {
+    for (uint32_t index = 0; index < nPools; ++index) {
+        ContactPool& P = *pools[index];
+        if (P.size() == 0) continue;
+        std::vector<uint32_t> to(P.size(), noContact);
+        uint32_t next = 0;
+        for (const auto& list : lists)
+            for (const uint32_t k : list)
+                if (contactOf[k] != noContact && poolOf(contactOf[k]) == index) to[slotOf(contactOf[k])] = next++;
+        for (auto& t : to)
+            if (t == noContact) t = next++; // (a pair in no list: after the others)
+        P.permute(to);
+        for (size_t slot = 0; slot < P.size(); ++slot) moved(P, index, slot);
+    }
+}
+
 long long InteractionContainer::iterMadeReal(size_t k) const {
     if (contactOf[k] != noContact) return pool(contactOf[k]).header(slotOf(contactOf[k])).iterMadeReal;
     const Interaction* I = object(k);

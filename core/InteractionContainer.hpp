@@ -80,6 +80,11 @@ public:
     void endContact(size_t k);
     // After the loop's parallel part: the ended contacts' records leave their pools.
     void sweep();
+    // Puts each pool's records in the order of the pairs in `lists` (the interaction loop's thread
+    // lists, one after the other): the records a thread reads one after the other are then
+    // neighbours, and no cache line holds records of two threads (appended in parallel, they
+    // were interleaved).
+    void orderPools(const std::vector<std::vector<uint32_t>>& lists);
     // Before the loop's parallel part: objects Python changed (geom, phys set) or let go.
     void syncObjects();
     long long objectsWrites = -1; // externalWrites() at the last syncObjects()

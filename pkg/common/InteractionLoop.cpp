@@ -514,6 +514,16 @@ void InteractionLoop::action() {
     if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
             || threadPairsCount != intrs.size() || (int)threadPairs.size() != threads)
         assignPairsToThreads(threads);
+    { // many contacts made since the pools were last put in the lists' order (the first step of a
+      // dense packing): in that order again (made in parallel, the records of two threads were
+      // interleaved, and a cache line written by both went back and forth between the cores)
+        size_t appended = 0, live = 0;
+        for (size_t p = 0; p < intrs.poolCount(); ++p) {
+            appended += intrs.pools[p]->appendsSinceOrder;
+            live += intrs.pools[p]->size();
+        }
+        if (live >= 1024 && 4 * appended > live) intrs.orderPools(threadPairs);
+    }
     prepareSkin(quick);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)
     Real displacement2 = 0; // D²
