@@ -347,8 +347,10 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         sc.oneGeomFunctor &= !fused && (n == 0 || sc.entries[0].geom == geomEntry.functor);
         sc.entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
         sc.contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
-        sc.contacts[n].made = made + n;
-        if (made[n]) made[n].reset(); // (left by a step that threw)
+        if (!fused) { // (may get a new geometry)
+            sc.contacts[n].made = made + n;
+            if (made[n]) made[n].reset(); // (left by a step that threw)
+        }
         ++n;
     }
     if (n == 0) return;
