@@ -401,7 +401,14 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         }
         if (!c.phys) { // a new contact
             // its geometry: made in this step, or kept from an earlier one
-            std::shared_ptr<IGeom> geom = *c.made ? std::move(*c.made) : intrs.record((size_t)x.k)->geom;
+            std::shared_ptr<IGeom> geom = std::move(*c.made);
+            if (!geom)
+                if (const InteractionContainer::Record* rec = intrs.record((size_t)x.k)) geom = rec->geom;
+            if (!geom) {
+#pragma omp critical(yadeError)
+                error = "an Ig2 functor found bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + " in contact but made no geometry";
+                continue;
+            }
             const Body& b1 = *bodies[c.id1];
             const Body& b2 = *bodies[c.id2];
             const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
