@@ -174,12 +174,6 @@ bool InteractionLoop::facetSphereReject(Body::id_t sphere, Real facetCode, Real&
     return distance > limit; // false for NaN
 }
 
-// Written only when it changes: the flags of both threads' interactions share cache lines, and
-// reading a line both threads only read costs nothing (writing it moves it between cores).
-static inline void setWasReal(InteractionContainer& intrs, long k, bool real) {
-    if (intrs.wasReal[k] != (char)real) intrs.wasReal[k] = real;
-}
-
 // (threadOwning() gives the thread that integrates a body: only locality depends on the split, never results.)
 void InteractionLoop::assignPairsToThreads(int threads) {
     const InteractionContainer& intrs = scene->interactions;
@@ -272,7 +266,19 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         sc.entries.resize(batchEntries);
         sc.contacts.resize(batchEntries);
         sc.made.resize(batchEntries);
+        sc.flags.resize(batchEntries);
     }
+    // (raw pointers: through the containers each access would reload them; none of these arrays
+    // is resized below)
+    Scratch::Entry* const entries = sc.entries.data();
+    Contact* const contacts = sc.contacts.data();
+    char* const flags = sc.flags.data();
+    char* const wasReal = intrs.wasReal.data();
+    // (written only when it changes: the flags of both threads' interactions share cache lines, and
+    // reading a line both threads only read costs nothing; writing it moves it between cores)
+    const auto setWasReal = [wasReal](long k, bool real) {
+        if (wasReal[k] != (char)real) wasReal[k] = real;
+    };
     size_t n = 0;
     sc.oneGeomFunctor = true;
     // (raw pointers: through the containers each access would reload them)
@@ -288,7 +294,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
         Real gap;
-        if (quick && !intrs.wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
+        if (quick && !wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
             if (gaps) gaps[i] = floatBelow(gap - twiceD);
             continue; // still apart
         }
@@ -344,11 +350,11 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             }
             if (sc.fuses) fused = geomEntry.functor;
         }
-        sc.oneGeomFunctor &= !fused && (n == 0 || sc.entries[0].geom == geomEntry.functor);
-        sc.entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
-        sc.contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
+        sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
+        entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
+        contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         if (!fused) { // (may get a new geometry)
-            sc.contacts[n].made = made + n;
+            contacts[n].made = made + n;
             if (made[n]) made[n].reset(); // (left by a step that threw)
         }
         ++n;
@@ -356,26 +362,25 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     if (n == 0) return;
     // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
     const BodyColumns columns{s.bodies.hot().columns(), shapes, shapeCache.radius.data()};
-    sc.flags.resize(n);
     if (sc.oneGeomFunctor) { // (the common case: all of one shape pair)
-        sc.entries[0].geom->goBatch(columns, sc.contacts.data(), n, sc.flags.data());
-        for (size_t e = 0; e < n; ++e) sc.entries[e].real = sc.flags[e];
+        entries[0].geom->goBatch(columns, contacts, n, flags);
+        for (size_t e = 0; e < n; ++e) entries[e].real = flags[e];
     } else {
         for (size_t first = 0; first < n; ++first) {
-            IGeomFunctor* f = sc.entries[first].geom;
+            IGeomFunctor* f = entries[first].geom;
             if (!f) continue; // done (or fused)
             sc.batch.clear();
             sc.where.clear();
             for (size_t e = first; e < n; ++e)
-                if (sc.entries[e].geom == f) {
-                    sc.batch.push_back(sc.contacts[e]);
+                if (entries[e].geom == f) {
+                    sc.batch.push_back(contacts[e]);
                     sc.where.push_back(e);
                 }
-            f->goBatch(columns, sc.batch.data(), sc.batch.size(), sc.flags.data());
+            f->goBatch(columns, sc.batch.data(), sc.batch.size(), flags);
             for (size_t m = 0; m < sc.where.size(); ++m) {
-                sc.entries[sc.where[m]].geom = nullptr;
-                sc.entries[sc.where[m]].real = sc.flags[m];
-                sc.contacts[sc.where[m]].geom = sc.batch[m].geom; // (a new one, or the same)
+                entries[sc.where[m]].geom = nullptr;
+                entries[sc.where[m]].real = flags[m];
+                contacts[sc.where[m]].geom = sc.batch[m].geom; // (a new one, or the same)
             }
         }
     }
@@ -383,12 +388,12 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
     const BodyContainer& bodies = s.bodies;
     size_t live = 0;
     for (size_t e = 0; e < n; ++e) {
-        Scratch::Entry& x = sc.entries[e];
-        Contact& c = sc.contacts[e];
+        Scratch::Entry& x = entries[e];
+        Contact& c = contacts[e];
         if (x.fused) { // (a contact with its functors: nothing to do before step 4)
             if (live != e) {
-                sc.entries[live] = x;
-                sc.contacts[live] = c;
+                entries[live] = x;
+                contacts[live] = c;
             }
             ++live;
             continue;
@@ -396,7 +401,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
             else if (*c.made) intrs.keepGeom((size_t)x.k, std::move(*c.made)); // (made, yet not a contact)
-            setWasReal(intrs, x.k, false);
+            setWasReal(x.k, false);
             continue;
         }
         if (!c.phys) { // a new contact
@@ -455,24 +460,23 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             continue;
         }
         if (live != e) { // (compacted over the entries left out)
-            sc.entries[live] = x;
-            sc.contacts[live] = c;
+            entries[live] = x;
+            contacts[live] = c;
         }
         ++live;
     }
     // 4. forces: runs of one Law2 functor (fused with its Ig2 functor or not), in list order
     for (size_t first = 0; first < live;) {
-        LawFunctor* f = sc.entries[first].law;
-        IGeomFunctor* fused = sc.entries[first].fused;
+        LawFunctor* f = entries[first].law;
+        IGeomFunctor* fused = entries[first].fused;
         size_t last = first;
-        while (last < live && sc.entries[last].law == f && sc.entries[last].fused == fused) ++last;
-        sc.flags.resize(last - first);
-        if (fused) fused->goBatchWithLaw(columns, sc.contacts.data() + first, last - first, *f, sc.flags.data());
-        else f->goBatch(sc.contacts.data() + first, last - first, sc.flags.data());
+        while (last < live && entries[last].law == f && entries[last].fused == fused) ++last;
+        if (fused) fused->goBatchWithLaw(columns, contacts + first, last - first, *f, flags);
+        else f->goBatch(contacts + first, last - first, flags);
         for (size_t e = first; e < last; ++e) {
-            const bool keep = sc.flags[e - first];
-            if (!keep) intrs.endContact((size_t)sc.entries[e].k); // back to a potential interaction
-            setWasReal(intrs, sc.entries[e].k, keep);
+            const bool keep = flags[e - first];
+            if (!keep) intrs.endContact((size_t)entries[e].k); // back to a potential interaction
+            setWasReal(entries[e].k, keep);
         }
         first = last;
     }
