@@ -171,3 +171,43 @@ def test_exception_without_x_drops_to_prompt(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "oops" in r.stderr
     assert "10" in r.stdout
+
+
+def test_script_namespace_has_the_reference_launchers_names(tmp_path):
+    """math's functions and constants at top level, sys, os, time, numpy (imported on first use),
+    math, yade, execfile, opts, typedEngine and Omega() as in the reference's launcher; names of
+    the reference's list still missing here are counted (issue 15 lists them in doc/ next)."""
+    ref = [l.strip() for l in (REPO / "tests" / "data" / "reference_launcher_globals.txt").read_text().splitlines()
+           if l.strip() and not l.startswith("#")]
+    script = write(tmp_path, "ns.py", """\
+        import sys as _s
+        print("lazy", "numpy" not in _s.modules)
+        print("names", sorted(globals()))
+        print("math", atan(1) * 4 == pi, radians(180) == pi, log(e) == 1.0, floor(2.5))
+        print("modules", sys.version_info.major, os.sep, time.time() > 0, math.pi == pi, yade.O is O)
+        print("numpy", int(numpy.arange(5).sum()), "numpy" in _s.modules)
+        print("opts", opts.nogui, opts.threads, opts.exitAfter)
+        O.engines = [ForceResetter(), NewtonIntegrator(damping=0.3)]
+        print("typedEngine", typedEngine("NewtonIntegrator").damping, Omega().engines[1].damping)
+        open(__file__ + ".inc", "w").write("included = 6 * 7\\n")
+        execfile(__file__ + ".inc")
+        print("execfile", included)
+    """)
+    r = run("-n", "-x", "-j", "2", script)
+    assert r.returncode == 0, r.stderr
+    out = {l.split(" ", 1)[0]: l.split(" ", 1)[1] for l in r.stdout.splitlines() if " " in l}
+    assert out["lazy"] == "True"
+    assert out["math"] == "True True True 2"
+    assert out["modules"] == "3 / True True True"
+    assert out["numpy"] == "10 True"
+    assert out["opts"] == "True 2 True"
+    assert out["typedEngine"] == "0.3 0.3"
+    assert out["execfile"] == "42"
+    import ast, math
+    names = set(ast.literal_eval(out["names"]))
+    launcherNames = {n for n in ref if n in dir(math) and not n.startswith("_")} | {
+        "sys", "os", "time", "math", "numpy", "yade", "execfile", "opts", "typedEngine", "Omega", "O", "pack", "geom", "utils"}
+    assert launcherNames - names == set()
+    missing = sorted(set(ref) - names)
+    print("names of the reference's launcher still missing here: %d of %d" % (len(missing), len(ref)))
+    assert len(missing) <= 563  # (a ratchet: 632 before this list was first checked; lower it as names come)

@@ -347,7 +347,8 @@ void bindOmega(py::module_& m) {
 
     using release = py::call_guard<py::gil_scoped_release>;
     static const auto startTime = std::chrono::steady_clock::now();
-    py::class_<OmegaProxy>(m, "Omega", "The simulation controller; the instance is O")
+    py::class_<OmegaProxy>(m, "Omega", "The simulation controller; the instance is O (Omega() gives another handle on the same one, as in Yade's O = Omega())")
+            .def(py::init<>())
             .def_property_readonly("bodies", [](OmegaProxy&) { return BodyContainerProxy(); })
             .def_property_readonly("interactions", [](OmegaProxy&) { return InteractionContainerProxy(); })
             .def_property_readonly("forces", [](OmegaProxy&) { return ForceContainerProxy(); })

@@ -6,7 +6,16 @@ from ._yade import O, Body, Sphere, Facet, Wall, Box, Aabb, State, FrictMat, Mat
 from ._yade import PWaveTimeStep, unbalancedForce, kineticEnergy, getSpheresVolume
 
 __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMaterial', 'randomColor', 'PWaveTimeStep',
-           'unbalancedForce', 'kineticEnergy', 'getSpheresVolume', 'aabbExtrema', 'avgNumInteractions', 'porosity']
+           'unbalancedForce', 'kineticEnergy', 'getSpheresVolume', 'aabbExtrema', 'avgNumInteractions', 'porosity',
+           'typedEngine']
+
+
+def typedEngine(name):
+    """The first engine of class `name` in O.engines (IndexError naming it if there is none, as in Yade)."""
+    for e in O.engines:
+        if type(e).__name__ == name:
+            return e
+    raise IndexError("no engine of class %s in O.engines" % name)
 
 
 def defaultMaterial():
