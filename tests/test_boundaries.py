@@ -787,3 +787,32 @@ def test_sphere_dropped_into_facetBox_stays_inside_with_bounded_energy():
     # it has hit the floor and several side faces
     faces = {O.bodies[i].shape.normal.dot(Vector3(0, 0, 1)) > .5 for i in touched}
     assert True in faces and False in faces and len(touched) >= 4
+
+
+# facetBox with one zero extent in the reference (Yade 2023.02a): one rectangle, two facets with the
+# normal along + the flat axis, whatever wallMask; two zero extents are refused. Printed by
+#   for ext, mask in [((1,1,0),63), ((1,0,1),63), ((0,1,1),63), ((1,1,0),16), ((1,1,0),15)]:
+#       f = geom.facetBox((0,0,0), ext, wallMask=mask)
+#       print(len(f), [(v[1]-v[0]).cross(v[2]-v[0]) for v in (facet's global vertices)])
+# the z-flat box's facets having the vertices (-1,-1,0) (1,-1,0) (1,1,0) and (-1,-1,0) (1,1,0) (-1,1,0).
+@pytest.mark.parametrize("ext,mask,normal", [((1, 1, 0), 63, (0, 0, 4)), ((1, 0, 1), 63, (0, 4, 0)),
+                                             ((0, 1, 1), 63, (4, 0, 0)), ((1, 1, 0), 16, (0, 0, 4)),
+                                             ((1, 1, 0), 15, (0, 0, 4))])
+def test_flat_facetBox_is_one_rectangle_as_in_the_reference(ext, mask, normal):
+    fs = geom.facetBox((0, 0, 0), ext, wallMask=mask)
+    assert len(fs) == 2
+    for b in fs:
+        v = [b.state.pos + b.state.ori * w for w in b.shape.vertices]
+        n = (v[1] - v[0]).cross(v[2] - v[0])
+        assert (n - Vector3(*normal)).norm() < 1e-12
+        assert all(abs(p[i]) < 1e-12 for p in v for i in range(3) if ext[i] == 0)
+    if ext == (1, 1, 0):
+        got = [[tuple(round(c, 12) + 0.0 for c in b.state.pos + b.state.ori * w) for w in b.shape.vertices] for b in fs]
+        assert got == [[(-1, -1, 0), (1, -1, 0), (1, 1, 0)], [(-1, -1, 0), (1, 1, 0), (-1, 1, 0)]]
+
+
+def test_facetBox_refuses_two_zero_or_negative_extents():
+    with pytest.raises(ValueError, match="at least 2 non-zero"):
+        geom.facetBox((0, 0, 0), (1, 0, 0))
+    with pytest.raises(ValueError, match="non-negative"):
+        geom.facetBox((0, 0, 0), (1, -1, 1))

@@ -14,13 +14,24 @@ def _quad(a, b, c, d, **kw):
 
 def facetBox(center, extents, orientation=Quaternion.Identity, wallMask=63, **kw):
     """The faces of a box (half-sizes `extents`) as facets, two per face. wallMask selects faces:
-    1 -x, 2 +x, 4 -y, 8 +y, 16 -z, 32 +z (63: all, 31: open top). Extra keywords go to utils.facet."""
+    1 -x, 2 +x, 4 -y, 8 +y, 16 -z, 32 +z (63: all, 31: open top). Extra keywords go to utils.facet.
+    A flat box (one extent zero) is one rectangle, two facets whose normal points along + that
+    axis, whatever wallMask (as in Yade)."""
     center, extents, q = Vector3(center), Vector3(extents), Quaternion(orientation)
-    if not all(e > 0 for e in extents):
-        raise ValueError('facetBox extents must be positive, got %s' % extents)
+    if not all(e >= 0 and math.isfinite(e) for e in extents):
+        raise ValueError('facetBox extents must be non-negative and finite, got %s' % extents)
+    flat = [i for i in range(3) if extents[i] == 0]
+    if len(flat) > 1:
+        raise ValueError('facetBox needs at least 2 non-zero extents, got %s' % extents)
 
     def corner(sx, sy, sz):
         return center + q * Vector3(sx * extents[0], sy * extents[1], sz * extents[2])
+
+    if flat:  # (the corners in the order that makes the normal point along + the flat axis)
+        rectangle = {0: [(0, -1, -1), (0, 1, -1), (0, 1, 1), (0, -1, 1)],
+                     1: [(-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)],
+                     2: [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]}[flat[0]]
+        return _quad(*[corner(*c) for c in rectangle], **kw)
 
     faces = [  # (mask bit, four corners in order)
         (1, [(-1, -1, -1), (-1, 1, -1), (-1, 1, 1), (-1, -1, 1)]),
