@@ -832,3 +832,25 @@ def test_guard_cost():
     print('guard cost, 1000 spheres x 500 steps: period 0: %.4f s, period 10: %.4f s (ratio %.3f), '
           'period 1: %.4f s (ratio %.3f)' % (times[0], times[10], times[10] / times[0], times[1],
                                               times[1] / times[0]))
+
+
+def test_negative_dt_hands_the_step_to_the_time_stepper():
+    """(manual: O.dt < 0 activates the TimeStepper in O.engines; the reference, without one,
+    raises RuntimeError 'No TimeStepper found in O.engines.')"""
+    mat()
+    O.bodies.append(sphere((0, 0, 0), 0.05))
+    O.engines = engines()
+    O.dt = 2e-6
+    with pytest.raises(RuntimeError, match="No TimeStepper found in O.engines"):
+        O.dt = -1
+    assert O.dt == 2e-6 and not O.dynDt
+    ts = GlobalStiffnessTimeStepper(active=False, defaultDt=3e-5)
+    O.engines = engines(timeStepper=ts)
+    O.step()
+    assert O.dt == 2e-6 and not O.dynDt  # (inactive: the step stays the user's)
+    O.dt = -1
+    assert ts.active and O.dynDt and O.dt == 2e-6  # (set by the stepper when it runs)
+    O.step()
+    assert O.dt == 3e-5 and ts.previousDt == 3e-5
+    with pytest.raises(ValueError):
+        O.dt = float("nan")

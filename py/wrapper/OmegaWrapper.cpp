@@ -2,6 +2,7 @@
 #include <chrono>
 #include <core/Functor.hpp>
 #include <core/SceneIO.hpp>
+#include <pkg/dem/GlobalStiffnessTimeStepper.hpp>
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
@@ -271,6 +272,13 @@ struct EnergyProxy {
 
 struct OmegaProxy {};
 
+// The time stepper of O.engines (the first one; null if none).
+static GlobalStiffnessTimeStepper* timeStepper() {
+    for (const auto& e : scene().getEngines())
+        if (auto* t = dynamic_cast<GlobalStiffnessTimeStepper*>(e.get())) return t;
+    return nullptr;
+}
+
 // Saves the current scene between two steps: directly from inside the loop (a PyRunner making a
 // checkpoint), otherwise by stopping a running loop and starting it again afterwards.
 std::string saveCurrentScene(bool xml) {
@@ -377,7 +385,20 @@ void bindOmega(py::module_& m) {
             .def_property_readonly("realtime", [](OmegaProxy&) {
                 return std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime).count();
             }, "Wall-clock seconds since start-up")
-            .def_property("dt", [](OmegaProxy&) { return scene().dt; }, [](OmegaProxy&, Real v) { scene().setDt(v); }, "Time step [s]")
+            .def_property("dt", [](OmegaProxy&) { return scene().dt; }, [](OmegaProxy&, Real v) {
+                // (a negative value hands the step to the time stepper in O.engines, as the manual says)
+                if (std::isfinite(v) && v < 0) {
+                    GlobalStiffnessTimeStepper* stepper = timeStepper();
+                    if (!stepper) throw std::runtime_error("No TimeStepper found in O.engines: O.dt < 0 hands the step to one (add e.g. GlobalStiffnessTimeStepper())");
+                    stepper->active = true;
+                    return;
+                }
+                scene().setDt(v);
+            }, "Time step [s]; a negative value activates the time stepper of O.engines (GlobalStiffnessTimeStepper), which then sets it")
+            .def_property_readonly("dynDt", [](OmegaProxy&) {
+                const GlobalStiffnessTimeStepper* stepper = timeStepper();
+                return stepper && stepper->active;
+            }, "Whether a time stepper in O.engines sets O.dt (dynamic time step)")
             .def_property("stopAtIter", [](OmegaProxy&) { return scene().stopAtIter; },
                     [](OmegaProxy&, long long v) { scene().stopAtIter = v; }, "The loop stops when O.iter reaches this value")
             .def_property_readonly("running", [](OmegaProxy&) { return omega().isRunning(); })
