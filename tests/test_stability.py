@@ -752,7 +752,7 @@ def test_material_refuses_non_positive(cls, param, value):
     assert (m.density, m.young) == (2000, 1e7)
 
 
-@pytest.mark.parametrize('value', [-1, 0, NAN, INF, -INF])
+@pytest.mark.parametrize('value', [0, NAN, INF, -INF])  # (-1: the time stepper, test_negative_dt_hands_the_step_to_the_time_stepper)
 def test_dt_refused(value):
     O.dt = 1.5e-3
     with pytest.raises(ValueError, match='dt'):
