@@ -207,3 +207,28 @@ def test_physics_replaced_while_iterating_is_what_the_next_step_uses():
     i = O.interactions[0, 1]
     assert i.phys.kn == 2 * kn0
     assert i.phys.normalForce.norm() == pytest.approx(2 * kn0 * i.geom.penetrationDepth, rel=1e-9)
+
+
+def test_withBodyAll_includes_potential_pairs_and_nth_walks_the_container():
+    three_spheres()
+    assert sorted((min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions.withBody(1)) == [(0, 1)]
+    assert sorted((min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions.withBodyAll(1)) == [(0, 1), (1, 2)]
+    pairs = sorted((min(O.interactions.nth(k).id1, O.interactions.nth(k).id2),
+                    max(O.interactions.nth(k).id1, O.interactions.nth(k).id2)) for k in range(len(O.interactions)))
+    assert pairs == [(0, 1), (1, 2)]
+    assert O.interactions.nth(-1) is O.interactions.nth(len(O.interactions) - 1)
+    with pytest.raises(IndexError):
+        O.interactions.nth(2)
+
+
+def test_resetTime_zeroes_the_clocks_and_nothing_else():
+    three_spheres()
+    O.bodies[2].state.vel = (-1, 0, 0)
+    O.run(20, True)
+    f = O.forces.f(1)
+    O.resetTime()
+    assert O.iter == 0 and O.time == 0 and O.realtime < 60
+    assert O.forces.f(1) == f and O.interactions.countReal() == 1
+    O.run(150, True)  # (#2 reaches #1 as without the reset)
+    assert O.iter == 150 and O.time == pytest.approx(150 * O.dt, rel=1e-12)
+    assert O.interactions.has(1, 2, onlyReal=True)

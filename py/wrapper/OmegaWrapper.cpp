@@ -166,6 +166,18 @@ struct InteractionContainerProxy {
             if (I->isReal()) l.append(py::cast(I));
         return l;
     }
+    py::list withBodyAll(int id) { // (potential pairs too)
+        py::list l;
+        InteractionContainer& intrs = scene().interactions;
+        for (const auto& p : intrs.partnersOf(id)) l.append(py::cast(intrs[p.k]));
+        return l;
+    }
+    py::object nth(long n) {
+        InteractionContainer& intrs = scene().interactions;
+        if (n < 0) n += (long)intrs.size();
+        if (n < 0 || n >= (long)intrs.size()) throw py::index_error("O.interactions.nth(" + std::to_string(n) + "): there are " + std::to_string(intrs.size()) + " interactions");
+        return py::cast(intrs[(size_t)n]);
+    }
     void erase(int a, int b) {
         if (!scene().interactions.erase(a, b)) throw py::index_error("No such interaction: ##" + std::to_string(a) + "+" + std::to_string(b));
     }
@@ -318,6 +330,8 @@ void bindOmega(py::module_& m) {
             .def("has", &InteractionContainerProxy::has, py::arg("id1"), py::arg("id2"), py::arg("onlyReal") = false)
             .def("all", &InteractionContainerProxy::all, py::arg("onlyReal") = false)
             .def("withBody", &InteractionContainerProxy::withBody, py::arg("id"), "Real interactions of body #id")
+            .def("withBodyAll", &InteractionContainerProxy::withBodyAll, py::arg("id"), "All interactions of body #id, potential ones (bounds overlapping, no contact) too")
+            .def("nth", &InteractionContainerProxy::nth, py::arg("n"), "The n-th interaction of the container (in its own order, real or potential)")
             .def("countReal", [](InteractionContainerProxy&) { return scene().interactions.countReal(); })
             .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"))
             .def("clear", [](InteractionContainerProxy&) { scene().interactions.clear(); });
@@ -354,7 +368,7 @@ void bindOmega(py::module_& m) {
             .def("clear", [](EnergyProxy&) { scene().energy.clear(); }, "Remove all terms");
 
     using release = py::call_guard<py::gil_scoped_release>;
-    static const auto startTime = std::chrono::steady_clock::now();
+    static auto startTime = std::chrono::steady_clock::now(); // (O.resetTime() moves it)
     py::class_<OmegaProxy>(m, "Omega", "The simulation controller; the instance is O (Omega() gives another handle on the same one, as in Yade's O = Omega())")
             .def(py::init<>())
             .def_property_readonly("bodies", [](OmegaProxy&) { return BodyContainerProxy(); })
@@ -380,6 +394,12 @@ void bindOmega(py::module_& m) {
                         scene().setEngines(engines);
                         injectLabels(engines);
                     }, "The simulation loop: engines run in this order every step")
+            .def("resetTime", [](OmegaProxy&) {
+                if (omega().isRunning()) throw std::runtime_error("O.resetTime() while the simulation runs: O.pause() first");
+                scene().iter = 0;
+                scene().time = 0;
+                startTime = std::chrono::steady_clock::now();
+            }, "Set O.iter, O.time and O.realtime back to zero (nothing else changes)")
             .def_property_readonly("iter", [](OmegaProxy&) { return scene().iter; }, "Current iteration (step) number")
             .def_property_readonly("time", [](OmegaProxy&) { return scene().time; }, "Simulated time [s]")
             .def_property_readonly("realtime", [](OmegaProxy&) {
