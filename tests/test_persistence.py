@@ -726,7 +726,9 @@ def test_reload_loads_the_last_saved_or_loaded_file(tmp_path):
     O.run(10, True)
     O.reload()
     assert O.iter == 10
+    assert O.filename == str(tmp_path / 'two.xml')
     O.load(str(tmp_path / 'one.yade'))
+    assert O.filename == str(tmp_path / 'one.yade')
     O.run(3, True)
     O.reload()
     assert O.iter == 0

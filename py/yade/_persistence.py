@@ -74,3 +74,5 @@ def reload(self, quiet=False):
 Omega.save = save
 Omega.load = load
 Omega.reload = reload
+Omega.filename = property(lambda self: _lastFile[0],
+                          doc='The file the simulation was last saved to or loaded from (None if none yet)')
