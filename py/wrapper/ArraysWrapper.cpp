@@ -7,7 +7,6 @@
 #include <pkg/dem/ScGeom.hpp>
 #include <py/wrapper/ArraysWrapper.hpp>
 #include <pybind11/numpy.h>
-#include <algorithm>
 
 namespace py = pybind11;
 
@@ -97,18 +96,18 @@ py::array rowsOf(const void* first, size_t n, size_t columns, size_t stride, boo
 py::dict interactionArrays() {
     Scene& s = omega().scene();
     const InteractionContainer& intrs = s.interactions;
-    const ContactPool* only = nullptr;
+    std::shared_ptr<ContactPool> pool; // the one pool with contacts, if one
     size_t pools = 0;
     for (size_t p = 0; p < intrs.poolCount(); ++p)
         if (intrs.pools[p]->size() > 0) {
-            only = intrs.pools[p].get();
+            pool = intrs.pools[p];
             ++pools;
         }
+    const ContactPool* only = pool.get();
     const ScGeom* g0 = only ? dynamic_cast<const ScGeom*>(only->geom(0)) : nullptr;
     const NormShearPhys* p0 = only ? dynamic_cast<const NormShearPhys*>(only->phys(0)) : nullptr;
     py::dict d;
     if (pools == 1 && g0 && p0 && intrs.countReal() == only->size()) { // views
-        const std::shared_ptr<ContactPool> pool = intrs.pools[std::find_if(intrs.pools.begin(), intrs.pools.end(), [&](const auto& p) { return p.get() == only; }) - intrs.pools.begin()];
         const py::capsule owner(new std::shared_ptr<ContactPool>(pool), [](void* p) { delete static_cast<std::shared_ptr<ContactPool>*>(p); });
         const size_t n = only->size(), stride = only->stride;
         const ContactPool::Header& h = only->header(0);
