@@ -1,0 +1,24 @@
+#include <core/Scene.hpp>
+#include <pkg/common/RotationEngine.hpp>
+
+namespace yade {
+
+void RotationEngine::postLoad() {
+    if (rotationAxis.squaredNorm() > 0) rotationAxis.normalize();
+}
+
+void RotationEngine::apply(const std::vector<int>& bodyIds) {
+    const Scene& s = *scene;
+    const Vector3r omega = angularVelocity * rotationAxis;
+    // the turn of one step: positions then lie on the circle after every step, whatever dt
+    const Matrix3r turn = AngleAxisr(angularVelocity * s.dt, rotationAxis).toRotationMatrix();
+    for (int id : bodyIds) {
+        State& st = *s.bodies[id]->state;
+        st.angVel() += omega;
+        if (!rotateAroundZero) continue;
+        const Vector3r r = st.pos() - zeroPoint;
+        st.vel() += (turn * r - r) / s.dt;
+    }
+}
+
+} // namespace yade
