@@ -10,5 +10,6 @@ from ._yade import O, setNumThreads  # noqa: F401
 version = '0.1.0'
 
 from . import _persistence  # noqa: E402,F401  (O.save, O.load, O.reload)
+from ._engines import *  # noqa: E402,F401,F403  (engine1 + engine2, CentralGravityEngine)
 from . import utils, geom  # noqa: E402,F401
 from . import pack  # noqa: E402,F401
