@@ -423,3 +423,19 @@ def test_rotating_facet_drags_a_resting_sphere_as_the_reference():
         assert close(O.bodies[s].state.pos, sp, 1e-9)
         assert close(O.bodies[s].state.vel, sv, 1e-7)
         assert O.interactions.countReal() == 1
+
+
+def test_engines_survive_save_and_load():
+    a = O.bodies.append(sphere((1, 2, 3), 1, fixed=True))
+    c = TranslationEngine(velocity=1, translationAxis=(0, 0, 1), ids=[a]) + RotationEngine(angularVelocity=2, rotationAxis=(0, 0, 1), rotateAroundZero=True)
+    O.engines = [c, ServoPIDController(axis=(0, 0, 1), kP=2.), HarmonicMotionEngine(A=(1, 0, 0)), ForceEngine(force=(1, 2, 3)), NewtonIntegrator()]
+    O.dt = 0.01
+    O.saveTmp()
+    O.run(3, True)
+    first = Vector3(O.bodies[a].state.pos)
+    O.loadTmp()
+    e = O.engines
+    assert [type(x).__name__ for x in e[0].comb] == ['TranslationEngine', 'RotationEngine'] and e[0].ids == [a]
+    assert e[1].kP == 2. and e[2].A == Vector3(1, 0, 0) and e[3].force == Vector3(1, 2, 3)
+    O.run(3, True)
+    assert O.bodies[a].state.pos == first and close(first, REF_COMBINED_3, 1e-13)
