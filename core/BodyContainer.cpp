@@ -22,11 +22,15 @@ void BodyContainer::unbindAll() {
         if (b) detach(*b);
 }
 
-BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
+void BodyContainer::checkInsertable(const std::shared_ptr<Body>& b) const {
     if (!b) throw std::invalid_argument("cannot append None to O.bodies");
     if (b->id >= 0)
         throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
     if (!b->state) throw std::invalid_argument("cannot append a body whose state is None");
+}
+
+BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
+    checkInsertable(b);
     b->id = static_cast<id_t>(bodies.size());
     try {
         attach(*b); // (may find the store full)
@@ -38,6 +42,20 @@ BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
     bodies.push_back(b);
     ++changes;
     return b->id;
+}
+
+BodyContainer::id_t BodyContainer::insertAtId(const std::shared_ptr<Body>& b, id_t id) {
+    checkInsertable(b);
+    if (id < 0) throw std::out_of_range("O.bodies.insertAtId: invalid id " + std::to_string(id) + " (must be 0 or more)");
+    if (exists(id)) throw std::out_of_range("O.bodies.insertAtId: id " + std::to_string(id) + " is taken by another body (erase it first)");
+    if ((size_t)id >= BodyStore::maxBodies)
+        throw std::length_error("O.bodies.insertAtId: id " + std::to_string(id) + " is beyond the largest possible id " + std::to_string(BodyStore::maxBodies - 1));
+    b->id = id;
+    attach(*b);
+    if ((size_t)id >= bodies.size()) bodies.resize((size_t)id + 1);
+    bodies[id] = b;
+    ++changes;
+    return id;
 }
 
 void BodyContainer::erase(id_t id) {

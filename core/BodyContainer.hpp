@@ -14,6 +14,9 @@ public:
     ~BodyContainer(); // the bodies' states keep their values (unbound)
     // Appends a body that is not yet in a scene; returns its new id.
     id_t insert(const std::shared_ptr<Body>& b);
+    // Puts a body that is not yet in a scene at the given free id (a hole, or past the end: the
+    // ids between become holes); returns it.
+    id_t insertAtId(const std::shared_ptr<Body>& b, id_t id);
     bool exists(id_t id) const { return id >= 0 && (size_t)id < bodies.size() && bodies[id]; }
     const std::shared_ptr<Body>& operator[](id_t id) const { return bodies[id]; }
     size_t size() const { return bodies.size(); } // including holes left by erase
@@ -35,6 +38,7 @@ private:
     std::shared_ptr<BodyStore> store = std::make_shared<BodyStore>();
     void attach(Body& b); // binds its state to record b.id
     void detach(Body& b);
+    void checkInsertable(const std::shared_ptr<Body>& b) const;
     void unbindAll();
 };
 

@@ -46,6 +46,7 @@ void ForceContainer::addPermTorque(int id, const Vector3r& t) {
 // depends only on which thread added which, never on timing
 void ForceContainer::sync() {
     if (synced) return;
+    ++syncCount;
     const size_t n = force.size();
     for (auto& list : remote) {
         for (const Contribution& c : list.items)

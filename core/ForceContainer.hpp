@@ -53,6 +53,7 @@ public:
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     // Adds the remote contributions (and, once per step, the permanent forces) to the totals.
     void sync();
+    long long syncCount = 0; // O.forceSyncCount: syncs that had something to add (for profiling)
     // The totals (call sync() first), for loops over all bodies.
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }

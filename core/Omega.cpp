@@ -51,11 +51,16 @@ void Omega::loop() {
     try {
         while (!stopRequested) {
             s.moveToNextTimeStep();
+            noteStepDone();
             if (s.iter == s.stopAtIter) {
                 s.stopAtIter = -1; // reached: a later O.run() runs until paused
                 reachedEnd = true;
-                break;
             }
+            if (s.stopAtTime > 0 && s.time >= s.stopAtTime) {
+                s.stopAtTime = -1; // (as stopAtIter)
+                reachedEnd = true;
+            }
+            if (reachedEnd) break;
         }
         endedByRequest = !reachedEnd && stopRequested.load();
     } catch (...) {
@@ -111,11 +116,38 @@ void Omega::wait() {
     }
 }
 
+bool Omega::waitFor(std::chrono::milliseconds timeout) {
+    if (inLoopThread()) throw std::runtime_error("O.wait() cannot be called from inside the simulation loop");
+    std::unique_lock<std::mutex> lock(mutex);
+    return stopped.wait_for(lock, timeout, [this] { return !running; });
+}
+
 void Omega::step() {
     if (inLoopThread()) throw std::runtime_error("O.step() cannot be called from inside the simulation loop");
     requireStopped("O.step()");
     joinLoop();
-    scene().moveToNextTimeStep();
+    Scene& s = scene();
+    const long long iter = s.iter;
+    if (s.subStepping) s.moveToNextSubStep();
+    else s.moveToNextTimeStep();
+    if (s.iter != iter) noteStepDone();
+}
+
+void Omega::noteStepDone() {
+    const auto now = std::chrono::steady_clock::now();
+    std::lock_guard<std::mutex> lock(speedMutex);
+    const double dt = std::chrono::duration<double>(now - lastStepEnd).count();
+    rates[nextRate] = anyStepEnd && dt > 0 ? 1 / dt : 0;
+    nextRate = (nextRate + 1) % speedSamples;
+    lastStepEnd = now;
+    anyStepEnd = true;
+}
+
+double Omega::speed() const {
+    std::lock_guard<std::mutex> lock(speedMutex);
+    double sum = 0;
+    for (double r : rates) sum += r;
+    return sum / speedSamples;
 }
 
 void Omega::reset() {

@@ -4,6 +4,7 @@
 #include <map>
 #include <mutex>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <thread>
@@ -25,7 +26,13 @@ public:
     // Stops the loop if it runs; true if it was still running (not ended by itself) and so may be resumed.
     bool interrupt();
     void wait();  // blocks until the loop stops; rethrows what stopped it
-    void step();  // one step in the calling thread
+    // Waits at most `timeout` for the loop to stop (rethrows nothing); true if it is stopped.
+    bool waitFor(std::chrono::milliseconds timeout);
+    void step();  // one step in the calling thread (one part of it when O.subStepping)
+    // O.speed: steps per second, the mean of the rates (1 / time between two consecutive steps'
+    // ends) over the last speedSamples steps; a step with no step before it counts as 0.
+    static constexpr int speedSamples = 10;
+    double speed() const;
     bool isRunning() const { return running; }
     bool inLoopThread() const { return std::this_thread::get_id() == loopThreadId; }
     void reset();       // a new empty scene
@@ -51,6 +58,12 @@ private:
     void loop();
     void joinLoop();
     void requireStopped(const char* what) const;
+    void noteStepDone(); // (for speed())
+    double rates[speedSamples] = {};
+    int nextRate = 0;
+    std::chrono::steady_clock::time_point lastStepEnd;
+    bool anyStepEnd = false;
+    mutable std::mutex speedMutex;
 };
 
 } // namespace yade

@@ -60,40 +60,69 @@ void Scene::setEngines(const std::vector<std::shared_ptr<Engine>>& e) {
     }
 }
 
-void Scene::moveToNextTimeStep() {
+void Scene::beginStep() {
     {
         std::lock_guard<std::mutex> lock(enginesMutex);
         inStep = true;
     }
     forces.resize(bodies.size());
     interactions.resizeBodies(bodies.size());
-    struct StepEnd { // leaves inStep and applies an O.engines change made during the step
-        Scene& s;
-        ~StepEnd() {
-            std::lock_guard<std::mutex> lock(s.enginesMutex);
-            s.inStep = false;
-            if (s.hasNextEngines) {
-                s.engines = std::move(s.nextEngines);
-                s.nextEngines.clear();
-                s.hasNextEngines = false;
-            }
-        }
-    } stepEnd{*this};
     if (trackEnergy) energy.resetInstantaneous();
     newContactBodies.clear();
-    const auto running = engines; // engines may be replaced from inside a step
-    for (const auto& e : running) {
-        e->scene = this;
-        if (e->dead || !e->isActivated()) continue;
-        if (!timingEnabled) {
-            e->action();
-            continue;
-        }
-        const auto t0 = std::chrono::steady_clock::now();
-        e->action();
-        e->execTime += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
-        ++e->execCount;
+}
+
+void Scene::runEngine(Engine& e) {
+    e.scene = this;
+    if (e.dead || !e.isActivated()) return;
+    if (!timingEnabled) {
+        e.action();
+        return;
     }
+    const auto t0 = std::chrono::steady_clock::now();
+    e.action();
+    e.execTime += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+    ++e.execCount;
+}
+
+void Scene::leaveStep() {
+    std::lock_guard<std::mutex> lock(enginesMutex);
+    inStep = false;
+    if (hasNextEngines) {
+        engines = std::move(nextEngines);
+        nextEngines.clear();
+        hasNextEngines = false;
+    }
+}
+
+void Scene::moveToNextTimeStep() {
+    if (subStep >= 0) { // a step begun by sub-steps: run its remaining parts
+        while (subStep >= 0) moveToNextSubStep();
+        return;
+    }
+    struct StepEnd { // (also when an engine throws)
+        Scene& s;
+        ~StepEnd() { s.leaveStep(); }
+    } stepEnd{*this};
+    beginStep();
+    const auto running = engines; // engines may be replaced from inside a step
+    for (const auto& e : running) runEngine(*e);
+    ++iter;
+    time += dt;
+}
+
+void Scene::moveToNextSubStep() {
+    if (subStep < 0) {
+        beginStep();
+        subStep = 0;
+        return;
+    }
+    if (subStep < (int)engines.size()) {
+        const std::shared_ptr<Engine> e = engines[subStep++]; // (moves on even if it throws)
+        runEngine(*e);
+        return;
+    }
+    subStep = -1;
+    leaveStep();
     ++iter;
     time += dt;
 }

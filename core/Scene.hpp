@@ -20,6 +20,7 @@ public:
     std::vector<std::shared_ptr<Material>> materials;
     long long iter = 0;
     long long stopAtIter = 0;
+    Real stopAtTime = 0; // O.stopAtTime: when positive, the loop stops at the end of the step where time reaches it
     Real time = 0;
     Real dt = 1e-8;
     bool isPeriodic = false;
@@ -58,8 +59,13 @@ public:
     void positionsChanged() { positionMirror.iter = -1; }
 
     Scene();
-    // Runs every engine once and advances iter and time.
+    // Runs every engine once and advances iter and time (the rest of the step if sub-steps began it).
     void moveToNextTimeStep();
+    // O.subStepping: a step in parts, one per call; subStep is the part to run next: -1 the step's
+    // start, k the k-th engine, the number of engines the step's end (iter and time advance).
+    bool subStepping = false;
+    int subStep = -1;
+    void moveToNextSubStep();
 
     // The engine list, or the one assigned during the current step (in effect at its end).
     const std::vector<std::shared_ptr<Engine>>& getEngines() const { return hasNextEngines ? nextEngines : engines; }
@@ -77,6 +83,9 @@ private:
     std::vector<std::shared_ptr<Engine>> engines, nextEngines;
     bool hasNextEngines = false, inStep = false;
     std::mutex enginesMutex;
+    void beginStep();
+    void runEngine(Engine& e);
+    void leaveStep(); // inStep off; an O.engines assigned during the step takes effect
 };
 
 } // namespace yade

@@ -236,6 +236,7 @@ Node SceneIO::toNode(Scene& s) {
     Node& sc = root.add("scene");
     sc.attrs["iter"] = std::to_string(s.iter);
     sc.attrs["stopAtIter"] = std::to_string(s.stopAtIter);
+    sc.attrs["stopAtTime"] = fmt(s.stopAtTime);
     sc.attrs["time"] = fmt(s.time);
     sc.attrs["dt"] = fmt(s.dt);
     sc.attrs["trackEnergy"] = s.trackEnergy ? "1" : "0";
@@ -291,6 +292,7 @@ std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
     auto s = std::make_shared<Scene>();
     s->iter = std::stoll(sc.attr("iter"));
     s->stopAtIter = std::stoll(sc.attr("stopAtIter"));
+    if (sc.attrs.count("stopAtTime")) s->stopAtTime = parseReal(sc.attr("stopAtTime")); // (files written before it was saved lack it)
     s->time = parseReal(sc.attr("time"));
     s->setDt(parseReal(sc.attr("dt")));
     s->trackEnergy = sc.attr("trackEnergy") == "1";

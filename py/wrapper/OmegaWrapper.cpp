@@ -7,6 +7,9 @@
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <set>
 
 namespace py = pybind11;
@@ -76,6 +79,36 @@ struct BodyContainerProxy {
         py::list ids;
         for (const auto& b : bodies) ids.append(s.appendBody(b));
         return std::move(ids);
+    }
+    // Bodies of a Python list, checked as append does (each a Body, none in a scene, none twice).
+    static std::vector<std::shared_ptr<Body>> newBodies(py::handle arg, const char* what) {
+        if (!py::isinstance<py::sequence>(arg) || py::isinstance<py::str>(arg))
+            throw py::type_error(std::string(what) + ": expected a list of bodies, got " + std::string(py::str(py::type::of(arg).attr("__name__"))));
+        std::vector<std::shared_ptr<Body>> bodies;
+        std::set<Body*> unique;
+        for (py::handle h : arg) {
+            if (!py::isinstance<Body>(h)) throw py::type_error(std::string(what) + ": every item must be a Body, got " + std::string(py::str(py::type::of(h).attr("__name__"))));
+            bodies.push_back(py::cast<std::shared_ptr<Body>>(h));
+            if (bodies.back()->id >= 0 || !unique.insert(bodies.back().get()).second)
+                throw py::index_error("Body already has id " + std::to_string(bodies.back()->id) + " set; appending such body (for the second time) is not allowed.");
+        }
+        return bodies;
+    }
+    py::list replace(py::object arg) { // (checked before anything is removed)
+        const std::vector<std::shared_ptr<Body>> bodies = newBodies(arg, "O.bodies.replace");
+        clear();
+        py::list ids;
+        for (const auto& b : bodies) ids.append(scene().appendBody(b));
+        return ids;
+    }
+    long insertAtId(const std::shared_ptr<Body>& b, long id) {
+        Scene& s = scene();
+        if (!b) throw py::type_error("O.bodies.insertAtId: the body is None");
+        if (id < 0 || id > std::numeric_limits<Body::id_t>::max()) throw py::index_error("O.bodies.insertAtId: invalid id " + std::to_string(id));
+        s.bodies.insertAtId(b, (Body::id_t)id);
+        s.forces.resize(s.bodies.size());
+        s.interactions.resizeBodies(s.bodies.size());
+        return id;
     }
     py::object get(long i) {
         Scene& s = scene();
@@ -301,6 +334,30 @@ std::string saveCurrentScene(bool xml) {
     if (resume) o.run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
     return data;
 }
+// Blocks until the background run stops, with the GIL released, waking every 50 ms to let Python
+// handle signals: on Ctrl-C (KeyboardInterrupt, or whatever a signal handler raised) the run
+// stops at the end of its current step and the exception propagates.
+void waitInterruptibly() {
+    Omega& o = omega();
+    for (;;) {
+        bool stopped;
+        {
+            py::gil_scoped_release nogil;
+            stopped = o.waitFor(std::chrono::milliseconds(50));
+        }
+        if (stopped) break;
+        if (PyErr_CheckSignals() != 0) {
+            py::error_already_set e; // (takes the pending exception)
+            {
+                py::gil_scoped_release nogil;
+                o.pause();
+            }
+            throw e;
+        }
+    }
+    py::gil_scoped_release nogil;
+    o.wait(); // rethrows what stopped the run
+}
 } // namespace
 
 void bindOmega(py::module_& m) {
@@ -310,6 +367,10 @@ void bindOmega(py::module_& m) {
             .def("__len__", &BodyContainerProxy::len)
             .def("__iter__", &BodyContainerProxy::iter)
             .def("erase", &BodyContainerProxy::erase, py::arg("id"), "Remove a body and its interactions")
+            .def("replace", &BodyContainerProxy::replace, py::arg("bodies"),
+                    "Remove all bodies and interactions, then append the bodies of the list (ids from 0); returns their ids")
+            .def("insertAtId", &BodyContainerProxy::insertAtId, py::arg("body"), py::arg("insertatid"),
+                    "Put a body (not yet in a scene) at a free id: a hole left by erase, or past the end (the ids between become holes); returns the id")
             .def("clear", &BodyContainerProxy::clear, "Remove all bodies and interactions");
     py::class_<RealInteractionIterator>(m, "InteractionIterator", "Iterator over the real interactions of O.interactions")
             .def("__iter__", [](RealInteractionIterator& it) -> RealInteractionIterator& { return it; }, py::return_value_policy::reference_internal)
@@ -430,12 +491,50 @@ void bindOmega(py::module_& m) {
             .def_property_readonly("numThreads", [](OmegaProxy&) { return scene().threads(); })
             .def("step", [](OmegaProxy&) { omega().step(); }, release(), "Run one step and return")
             .def("run", [](OmegaProxy&, long long nSteps, bool wait) {
-                omega().run(nSteps, wait);
-                if (wait) omega().wait();
-            }, release(), py::arg("nSteps") = -1, py::arg("wait") = false,
-                    "Run in the background (returns at once); nSteps>0 stops after that many steps; wait=True blocks until it stops")
+                {
+                    py::gil_scoped_release nogil;
+                    omega().run(nSteps, wait);
+                }
+                if (wait) waitInterruptibly();
+            }, py::arg("nSteps") = -1, py::arg("wait") = false,
+                    "Run in the background (returns at once); nSteps>0 stops after that many steps; wait=True blocks until it stops "
+                    "(Ctrl-C stops the run at the end of the current step and raises KeyboardInterrupt)")
             .def("pause", [](OmegaProxy&) { omega().pause(); }, release(), "Stop the loop after the current step")
-            .def("wait", [](OmegaProxy&) { omega().wait(); }, release(), "Block until the loop stops; raise what stopped it")
+            .def("wait", [](OmegaProxy&) {
+                if (omega().inLoopThread()) throw std::runtime_error("O.wait() cannot be called from inside the simulation loop");
+                waitInterruptibly();
+            }, "Block until the loop stops; raise what stopped it (Ctrl-C stops the run at the end of the current step and raises KeyboardInterrupt)")
+            .def_property("stopAtTime", [](OmegaProxy&) { return scene().stopAtTime; },
+                    [](OmegaProxy&, Real v) {
+                        if (std::isnan(v)) throw py::value_error("O.stopAtTime must be a number (got NaN)");
+                        scene().stopAtTime = v;
+                    }, "When positive, the loop stops at the end of the step where O.time reaches it (and sets it to -1)")
+            .def_property_readonly("speed", [](OmegaProxy&) { return omega().speed(); },
+                    "Steps per second: the mean of the rates (1 / time between the ends of two consecutive steps) over the last 10 steps")
+            .def_property("subStepping", [](OmegaProxy&) { return scene().subStepping; },
+                    [](OmegaProxy&, bool v) { scene().subStepping = v; },
+                    "When True, O.step() runs one part of a step: its start, one engine, or its end (see O.subStep)")
+            .def_property_readonly("subStep", [](OmegaProxy&) { return scene().subStep; },
+                    "The part of the step O.step() runs next when O.subStepping: -1 the step's start (outside a step), "
+                    "k the k-th engine of O.engines, len(O.engines) the step's end (iter and time advance)")
+            .def_property("forceSyncCount", [](OmegaProxy&) { return scene().forces.syncCount; },
+                    [](OmegaProxy&, long long v) { scene().forces.syncCount = v; },
+                    "How many times O.forces gathered the contributions of the threads into the totals (for profiling; may be set)")
+            .def("exitNoBacktrace", [](OmegaProxy&, int status) {
+                // the run stops at the end of its step (from inside the loop: no wait), the output is flushed, no atexit handler runs
+                {
+                    py::gil_scoped_release nogil;
+                    omega().pause();
+                }
+                for (const char* stream : {"stdout", "stderr"}) {
+                    try {
+                        py::module_::import("sys").attr(stream).attr("flush")();
+                    } catch (py::error_already_set&) {
+                    }
+                }
+                std::fflush(nullptr);
+                std::_Exit(status);
+            }, py::arg("status") = 0, "Exit the process at once with the given status (output flushed; no exit handlers run)")
             .def("reset", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the scene with an empty one")
             .def("switchWorld", [](OmegaProxy&) { omega().switchWorld(); }, release(), "Toggle between the primary and the secondary scene")
             .def("_toBytes", [](OmegaProxy&, bool xml) {

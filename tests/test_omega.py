@@ -1,0 +1,303 @@
+"""O's remaining controls, as the manual and the reference name them: O.stopAtTime, O.speed,
+O.subStepping / O.subStep, O.exitNoBacktrace, O.forceSyncCount, O.bodies.replace and
+O.bodies.insertAtId.
+
+Figures marked "reference" were printed by the reference (yade-double -n -x) on the same script."""
+
+import math
+import os
+import pathlib
+import subprocess
+import textwrap
+import time
+
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parent.parent
+LAUNCHER = REPO / "yade"
+BUILD = pathlib.Path(os.environ.get("YADE_BUILD_DIR") or REPO / "build")
+
+pytestmark = pytest.mark.skipif(not (BUILD / "yade").is_dir(), reason="yade is not built (run bash scripts/setup.sh)")
+
+
+@pytest.fixture
+def y(fresh_scene):
+    import yade
+    return yade
+
+
+def falling_sphere(y, engines=None):
+    O = y.O
+    O.engines = engines or [y.ForceResetter(), y.InsertionSortCollider([y.Bo1_Sphere_Aabb()]),
+                            y.InteractionLoop([y.Ig2_Sphere_Sphere_ScGeom()], [y.Ip2_FrictMat_FrictMat_FrictPhys()],
+                                              [y.Law2_ScGeom_FrictPhys_CundallStrack()]),
+                            y.NewtonIntegrator(gravity=(0, 0, -10))]
+    O.bodies.append(y.utils.sphere((0, 0, 0), 1))
+    O.dt = 1e-3
+
+
+# ------------------------------------------------------------------ sub-stepping
+
+def test_substepping_runs_one_engine_per_step(y):
+    O = y.O
+    falling_sphere(y)
+    assert O.subStep == -1 and O.subStepping is False
+    O.subStepping = True
+    seen = []
+    for i in range(7):
+        O.step()
+        seen.append((O.iter, O.subStep, O.time, O.bodies[0].state.pos[2]))
+    # reference (4 engines): the step's start, the engines 0..3, the step's end
+    assert [s[:2] for s in seen] == [(0, 0), (0, 1), (0, 2), (0, 3), (0, 4), (1, -1), (1, 0)]
+    assert [s[2] for s in seen] == [0, 0, 0, 0, 0, 0.001, 0.001]
+    # the integrator (engine 3) moves the sphere: 10 m/s² · 1 ms · (1 - damping 0.2) · 1 ms
+    assert [s[3] for s in seen[:4]] == [0, 0, 0, 0]
+    assert seen[4][3] == pytest.approx(-8e-6, rel=1e-12) and seen[6][3] == seen[4][3]
+
+
+def test_step_finishes_a_step_begun_by_substeps(y):
+    O = y.O
+    falling_sphere(y)
+    O.subStepping = True
+    O.step()
+    O.step()
+    O.step()  # engines 0 and 1 have run
+    O.subStepping = False
+    assert O.subStep == 2  # (the reference keeps it too)
+    O.step()  # the rest of that step only
+    assert (O.iter, O.subStep, O.time) == (1, -1, 0.001)
+    O.subStepping = True
+    O.step()
+    assert (O.iter, O.subStep) == (1, 0)
+    O.run(3, True)  # (reference: iter 2 -> 5 from subStep 0) full steps, the first completing the begun one
+    assert (O.iter, O.subStep) == (4, -1)
+    assert O.time == pytest.approx(0.004)
+    # same trajectory as plain steps: 4 steps of the damped integrator
+    v, z = 0.0, 0.0
+    for i in range(4):
+        v += -10 * 1e-3 * 0.8
+        z += v * 1e-3
+    assert O.bodies[0].state.pos[2] == pytest.approx(z, rel=1e-12)
+
+
+def test_substeps_run_each_engine_once_per_step(y):
+    O = y.O
+    calls = []
+    y.__dict__['_substep_calls'] = calls
+    falling_sphere(y, [y.ForceResetter(), y.PyRunner(command='import yade; yade._substep_calls.append(yade.O.iter)', iterPeriod=1, initRun=True),
+                       y.NewtonIntegrator(gravity=(0, 0, -10))])
+    O.subStepping = True
+    for i in range(12):  # 3 engines: 5 parts a step (start, engines, end); 12 = 5 + 5 + 2
+        O.step()
+    assert O.iter == 2 and O.subStep == 1
+    assert calls == [0, 1]
+    O.step()
+    assert calls == [0, 1, 2] and O.subStep == 2
+
+
+# ------------------------------------------------------------------ stopAtTime
+
+def test_stopAtTime_stops_the_run(y):
+    O = y.O
+    falling_sphere(y)
+    assert O.stopAtTime == 0  # (reference default)
+    O.stopAtTime = 0.0105
+    O.run()
+    O.wait()
+    assert (O.iter, O.stopAtTime) == (11, -1)  # reference: 11, time 0.011, stopAtTime -1.0
+    O.stopAtTime = 0.02
+    O.run()
+    O.wait()
+    assert (O.iter, O.stopAtTime) == (20, -1)  # reference: 20
+    assert O.time == pytest.approx(0.02)
+
+
+def test_stopAtTime_and_stopAtIter_are_independent(y):
+    O = y.O
+    falling_sphere(y)
+    O.stopAtTime = 0.0255
+    O.stopAtIter = 40
+    O.run()
+    O.wait()
+    assert (O.iter, O.stopAtTime, O.stopAtIter) == (26, -1, 40)  # stopAtIter is kept (reference)
+    O.stopAtTime = 1
+    O.run()
+    O.wait()
+    assert (O.iter, O.stopAtTime, O.stopAtIter) == (40, 1, -1)  # and stopAtTime when stopAtIter stops it
+
+
+@pytest.mark.parametrize("value", [0, -1])
+def test_stopAtTime_not_positive_never_stops(y, value):
+    O = y.O
+    falling_sphere(y)
+    O.run(3, True)
+    O.stopAtTime = value
+    O.run(50, True)
+    assert O.iter == 53 and O.stopAtTime == value
+
+
+def test_stopAtTime_is_checked_after_each_step_of_a_run_only(y):
+    O = y.O
+    falling_sphere(y)
+    O.stopAtTime = 0.005
+    for i in range(20):
+        O.step()  # O.step ignores it (reference: iter 40 past 0.025, stopAtTime kept)
+    assert O.iter == 20 and O.stopAtTime == 0.005
+    O.run()
+    O.wait()  # already past: one step, then it stops (reference)
+    assert O.iter == 21 and O.stopAtTime == -1
+    with pytest.raises(ValueError):
+        O.stopAtTime = float('nan')
+
+
+def test_stopAtTime_is_saved(y, tmp_path):
+    O = y.O
+    falling_sphere(y)
+    O.stopAtTime = 0.125
+    O.save(str(tmp_path / "s.yade"))
+    O.reset()
+    assert O.stopAtTime == 0
+    O.load(str(tmp_path / "s.yade"))
+    assert O.stopAtTime == 0.125
+
+
+# ------------------------------------------------------------------ speed
+
+def test_speed_is_the_mean_rate_of_the_last_ten_steps(y):
+    O = y.O
+    y.__dict__['_sleep'] = time.sleep
+    falling_sphere(y)
+    O.run(2000, True)
+    fast = O.speed
+    assert fast > 1000  # steps of a few microseconds
+    O.engines = O.engines + [y.PyRunner(command='import yade; yade._sleep(0.02)', iterPeriod=1)]
+    O.run(1, True)
+    # one slow step (~50 steps/s) replaced one of the ten fast rates: the mean fell by about a tenth
+    assert 0.6 * fast < O.speed < 0.95 * fast
+    O.run(10, True)
+    assert 20 < O.speed < 51  # all ten are slow steps (sleeping 20 ms: at most 50 per second)
+    assert O.speed == O.speed  # (reading it does not change it)
+
+
+# ------------------------------------------------------------------ forceSyncCount
+
+def test_forceSyncCount_counts_and_can_be_set(y):
+    O = y.O
+    falling_sphere(y)
+    O.bodies.append(y.utils.sphere((1.5, 0, 0), 1))  # overlapping: a contact adds forces every step
+    O.forceSyncCount = 0
+    O.run(5, True)
+    n = O.forceSyncCount
+    assert n >= 5
+    O.forceSyncCount = 7
+    assert O.forceSyncCount == 7
+
+
+# ------------------------------------------------------------------ O.bodies.replace / insertAtId
+
+def test_bodies_replace(y):
+    O = y.O
+    falling_sphere(y)
+    O.bodies.append([y.utils.sphere((1.5, 0, 0), 1), y.utils.sphere((6, 0, 0), 1)])
+    O.step()
+    assert O.interactions.countReal() == 1
+    old = O.bodies[0]
+    new = [y.utils.sphere((0, 0, 10), 1), y.utils.sphere((0, 0, 20), 1)]
+    assert O.bodies.replace(new) == [0, 1]  # reference: [0, 1]
+    assert len(O.bodies) == 2 and [b.id for b in O.bodies] == [0, 1]
+    assert O.bodies[1] is new[1] and O.bodies[1].state.pos[2] == 20
+    assert old.id == -1
+    assert len(O.interactions) == 0  # (the reference keeps the old bodies' interactions)
+    O.step()
+    assert O.bodies[0].state.pos[2] < 10
+    assert O.bodies.replace([]) == [] and len(O.bodies) == 0  # reference: [] 0
+
+
+def test_bodies_replace_refuses_bad_input_and_changes_nothing(y):
+    O = y.O
+    falling_sphere(y)
+    kept = O.bodies[0]
+    with pytest.raises(TypeError):
+        O.bodies.replace(kept)  # a list is needed (reference: ArgumentError, a TypeError)
+    with pytest.raises(TypeError):
+        O.bodies.replace([1, 2])
+    with pytest.raises(IndexError, match="already has id 0"):
+        O.bodies.replace([kept, y.utils.sphere((1, 1, 1), 1)])  # (reference: IndexError, same text)
+    b = y.utils.sphere((1, 1, 1), 1)
+    with pytest.raises(IndexError):
+        O.bodies.replace([b, b])
+    assert len(O.bodies) == 1 and O.bodies[0] is kept and kept.id == 0 and b.id == -1
+
+
+def test_bodies_insertAtId(y):
+    O = y.O
+    falling_sphere(y)
+    O.bodies.append(y.utils.sphere((3, 0, 0), 1))
+    O.bodies.erase(0)
+    b = y.utils.sphere((9, 9, 9), 1)
+    assert O.bodies.insertAtId(b, 0) == 0 and b.id == 0 and len(O.bodies) == 2  # reference: 0 0 2
+    assert O.bodies[0] is b and O.bodies[0].state.pos == y.Vector3(9, 9, 9)
+    c = y.utils.sphere((20, 0, 0), 1)
+    assert O.bodies.insertAtId(c, 5) == 5 and len(O.bodies) == 6  # reference: 5 6, ids [0, 1, 5]
+    assert [x.id for x in O.bodies] == [0, 1, 5]
+    assert [O.bodies[i] is None for i in range(6)] == [False, False, True, True, True, False]
+    assert O.bodies.insertAtId(y.utils.sphere((30, 0, 0), 1), 2) == 2
+    assert [x.id for x in O.bodies] == [0, 1, 2, 5]
+    d = y.utils.sphere((40, 0, 0), 1)
+    assert O.bodies.append(d) == 6  # appending goes on after the last id
+    O.run(3, True)  # the inserted bodies fall with the others
+    assert O.bodies[5].state.pos[2] < 0 and O.bodies[5].state.vel[2] < 0
+    assert len(O.forces.f(5)) == 3
+
+
+def test_bodies_insertAtId_refuses_bad_input(y):
+    O = y.O
+    falling_sphere(y)
+    n = len(O.bodies)
+    with pytest.raises(IndexError, match="taken"):
+        O.bodies.insertAtId(y.utils.sphere((1, 1, 1), 1), 0)  # (reference: logs an error, returns -1)
+    with pytest.raises(IndexError):
+        O.bodies.insertAtId(y.utils.sphere((1, 1, 1), 1), -1)  # (reference: crashes)
+    with pytest.raises(IndexError, match="already has id"):
+        O.bodies.insertAtId(O.bodies[0], 3)  # (reference: the body is then in the container twice)
+    with pytest.raises((ValueError, IndexError)):
+        O.bodies.insertAtId(y.utils.sphere((1, 1, 1), 1), 1 << 30)
+    assert len(O.bodies) == n
+
+
+# ------------------------------------------------------------------ exitNoBacktrace
+
+def run_script(tmp_path, body, timeout=60):
+    script = tmp_path / "s.py"
+    script.write_text(textwrap.dedent(body))
+    env = dict(os.environ, YADE_BUILD_DIR=str(BUILD))
+    t = time.time()
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(script)], capture_output=True, text=True,
+                       timeout=timeout, env=env, cwd=str(tmp_path))
+    return r, time.time() - t
+
+
+def test_exitNoBacktrace(tmp_path):
+    r, _ = run_script(tmp_path, """
+        import atexit, sys
+        atexit.register(lambda: print('ATEXIT'))
+        print('before')
+        sys.stderr.write('err\\n')
+        O.exitNoBacktrace(3)
+        print('after')
+    """)
+    # reference: status 3, 'before' and 'err' written (also to a file), nothing after, no atexit
+    assert r.returncode == 3
+    assert "before" in r.stdout and "err" in r.stderr
+    assert "after" not in r.stdout and "ATEXIT" not in r.stdout
+
+
+def test_exitNoBacktrace_while_running(tmp_path):
+    r, took = run_script(tmp_path, """
+        O.engines = [ForceResetter(), NewtonIntegrator()]
+        O.bodies.append(sphere((0, 0, 0), 1))
+        O.run()
+        O.exitNoBacktrace()
+    """)
+    assert r.returncode == 0  # (the reference hangs here)
+    assert took < 30
