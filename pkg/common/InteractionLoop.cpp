@@ -434,10 +434,19 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
             I.id2 = c.id2;
             I.geom = geom;
             I.phys.reset();
-            physEntry->functor->go(b1.material, b2.material, I);
+            bool failed = false;
+            try {
+                physEntry->functor->go(b1.material, b2.material, I);
+            } catch (const std::exception& e) { // (not out of the parallel region: reported after it)
+                I.phys.reset();
+                failed = true;
+#pragma omp critical(yadeError)
+                error = physEntry->functor->getClassName() + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + "): " + e.what();
+            }
             std::shared_ptr<IPhys> phys = std::move(I.phys);
             I.geom.reset();
             if (!phys) {
+                if (failed) continue;
 #pragma omp critical(yadeError)
                 error = physEntry->functor->getClassName() + " made no physics for bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2);
                 continue;
@@ -471,8 +480,14 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         IGeomFunctor* fused = entries[first].fused;
         size_t last = first;
         while (last < live && entries[last].law == f && entries[last].fused == fused) ++last;
-        if (fused) fused->goBatchWithLaw(columns, contacts + first, last - first, *f, flags);
-        else f->goBatch(contacts + first, last - first, flags);
+        try {
+            if (fused) fused->goBatchWithLaw(columns, contacts + first, last - first, *f, flags);
+            else f->goBatch(contacts + first, last - first, flags);
+        } catch (const std::exception& e) { // (not out of the parallel region: reported after it; the contacts stay)
+            std::fill(flags, flags + (last - first), 1);
+#pragma omp critical(yadeError)
+            error = f->getClassName() + ": " + e.what();
+        }
         for (size_t e = first; e < last; ++e) {
             const bool keep = flags[e - first];
             if (!keep) intrs.endContact((size_t)entries[e].k); // back to a potential interaction

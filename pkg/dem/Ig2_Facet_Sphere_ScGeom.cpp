@@ -61,7 +61,9 @@ bool Ig2_Facet_Sphere_ScGeom::go(const Facet& f, Real r, const Kinematics& st1, 
     normal = toGlobal * normal;
     g.contactPoint = st2.pos + shift2 - (r - 0.5 * penetrationDepth) * normal;
     g.penetrationDepth = penetrationDepth;
-    g.refR1 = 2 * r; // a facet has no radius: it counts as a sphere twice as big in the stiffness
+    // A facet has no radius: it counts as a sphere twice as big in the linear stiffness, or, with
+    // hertzian, as a very large one (the effective radius of the Hertz contact is then r).
+    g.refR1 = hertzian ? hertzianFacetRadius : 2 * r;
     g.refR2 = r;
     g.precompute(st1, st2, scene->dt, normal, isNew, shift2, false);
     return true;

@@ -9,9 +9,13 @@ namespace yade {
 
 class Ig2_Facet_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Facet_Sphere_ScGeom, Facet, Sphere, ScGeom> {
 public:
+    static constexpr const char* classDoc = "Ig2 functor: ScGeom of a Facet and a Sphere, the contact being with the face, an edge or a vertex.";
     Real shrinkFactor = 0;
+    bool hertzian = false;
+    static constexpr Real hertzianFacetRadius = 1e5; // [m], as the reference: R* = r·1e5/(r+1e5)
     template <class V> void visit(V& v) {
         IGeomFunctor::visit(v);
+        v.attr("hertzian", hertzian, "Give the facet a very large radius (1e5 m) instead of twice the sphere's, so that a Hertzian law sees a sphere on a plane (effective radius r)");
         v.attr("shrinkFactor", shrinkFactor, "Shrink the facet's edges inwards by this fraction of the sphere radius", Attr::nonNegative);
     }
     bool go(const Facet& f, const Sphere& s, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,

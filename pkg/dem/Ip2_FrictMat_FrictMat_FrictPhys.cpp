@@ -16,7 +16,10 @@ void Ip2_FrictMat_FrictMat_FrictPhys::go(const std::shared_ptr<Material>& m1, co
     auto phys = std::make_shared<FrictPhys>();
     phys->kn = 2 * a.young * ra * b.young * rb / (a.young * ra + b.young * rb);
     phys->ks = 2 * a.young * ra * a.poisson * b.young * rb * b.poisson / (a.young * ra * a.poisson + b.young * rb * b.poisson);
-    phys->tangensOfFrictionAngle = std::tan(std::min(a.frictionAngle, b.frictionAngle));
+    if (kn) phys->kn = (*kn)(a.id, b.id, phys->kn, phys->kn);
+    if (ks) phys->ks = (*ks)(a.id, b.id, phys->ks, phys->ks);
+    phys->tangensOfFrictionAngle =
+            std::tan(frictAngle ? (*frictAngle)(a.id, b.id, a.frictionAngle, b.frictionAngle) : std::min(a.frictionAngle, b.frictionAngle));
     I.phys = phys;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <py/wrapper/Attributes.hpp>
+#include <pkg/dem/MatchMaker.hpp>
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
@@ -218,7 +219,13 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
         }
         case AttrKind::Ptr: {
             std::shared_ptr<Serializable> obj;
-            if (!v.is_none()) obj = castOr<std::shared_ptr<Serializable>>(v, where, pointeeName(a));
+            if (pointeeName(a) == "MatchMaker" && (py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) && !py::isinstance<py::bool_>(v)) {
+                // a number where a MatchMaker is expected: one that always gives it, as in the reference
+                const Real x = py::cast<Real>(v);
+                if (!std::isfinite(x)) throw py::value_error(where + " must be finite, got " + std::string(py::str(v)));
+                obj = MatchMaker::constant(x);
+            } else if (!v.is_none())
+                obj = castOr<std::shared_ptr<Serializable>>(v, where, pointeeName(a));
             if (!a.setPtr(p, obj)) throw py::type_error(where + ": expected " + pointeeName(a) + ", got " + obj->getClassName());
             break;
         }

@@ -1,0 +1,212 @@
+"""Hertz-Mindlin contacts (MindlinPhys, Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin,
+MatchMaker): the analytic Hertz force, the restitution coefficient of a binary impact, and the reference's
+numbers on the same scripts (Yade 2023.02a, `yade-double -n -x`; the scripts are in the comments)."""
+import math
+
+import pytest
+
+from yade import (O, FrictMat, ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, Bo1_Facet_Aabb, InteractionLoop,
+                  Ig2_Sphere_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom, Ip2_FrictMat_FrictMat_MindlinPhys,
+                  Law2_ScGeom_MindlinPhys_Mindlin, NewtonIntegrator, MatchMaker, MindlinPhys, utils)
+
+pytestmark = pytest.mark.usefixtures('fresh_scene')
+
+
+def engines(ip2=None, law=None, hertzian=False):
+    return [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),
+            InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(hertzian=hertzian)],
+                            [ip2 or Ip2_FrictMat_FrictMat_MindlinPhys()], [law or Law2_ScGeom_MindlinPhys_Mindlin()]),
+            NewtonIntegrator(damping=0)]
+
+
+def two_materials():
+    m1 = O.materials.append(FrictMat(young=1e9, poisson=0.2, density=2500, frictionAngle=0.3))
+    m2 = O.materials.append(FrictMat(young=0.5e9, poisson=0.3, density=2000, frictionAngle=0.4))
+    return m1, m2
+
+
+def effective_moduli(E1, n1, E2, n2):
+    E = 1 / ((1 - n1**2) / E1 + (1 - n2**2) / E2)
+    G1, G2 = E1 / (2 * (1 + n1)), E2 / (2 * (1 + n2))
+    return E, 1 / ((2 - n1) / G1 + (2 - n2) / G2)
+
+
+def impact(en, v1=(1, 0.1, 0), v2=(-0.5, 0, 0), **ip2):
+    """The reference's script: two spheres (r 1 mm and 2 mm, two materials) collide; runs until the contact ends."""
+    m1, m2 = two_materials()
+    O.bodies.append([utils.sphere((0, 0, 0), 0.001, material=m1), utils.sphere((0.00301, 0, 0), 0.002, material=m2)])
+    O.bodies[0].state.vel, O.bodies[1].state.vel = v1, v2
+    O.engines = engines(Ip2_FrictMat_FrictMat_MindlinPhys(en=en, **ip2))
+    O.dt = 1e-8
+    first = None
+    for _ in range(400000):
+        O.step()
+        if O.interactions.countReal() and first is None:
+            i = [i for i in O.interactions if i.isReal][0]
+            first = {k: getattr(i.phys, k) for k in ('kno', 'kso', 'betan', 'betas', 'tangensOfFrictionAngle', 'kn', 'ks', 'initD')}
+        if first is not None and O.interactions.countReal() == 0:
+            break
+    return first
+
+
+def test_constants_equal_the_reference_and_the_formulas():
+    first = impact(0.5)
+    E, G = effective_moduli(1e9, 0.2, 0.5e9, 0.3)
+    R = 0.001 * 0.002 / 0.003
+    assert first['kno'] == pytest.approx(4 / 3 * E * math.sqrt(R), rel=1e-14)
+    assert first['kso'] == pytest.approx(8 * G * math.sqrt(R), rel=1e-14)
+    # the reference, ref_impact.py below: kno, kso, tan(friction angle)
+    assert first['kno'] == pytest.approx(12383639.796026912, rel=1e-12)
+    assert first['kso'] == pytest.approx(15695981.139645051, rel=1e-12)
+    assert first['tangensOfFrictionAngle'] == pytest.approx(0.30933624960962325, rel=1e-14)
+    # kn and ks are the tangent stiffnesses at the current overlap
+    assert first['kn'] == pytest.approx(1.5 * first['kno'] * math.sqrt(first['initD']), rel=1e-12)
+    assert first['ks'] == pytest.approx(first['kso'] * math.sqrt(first['initD']), rel=1e-12)
+    # the reference's damping ratio for en=0.5 is a fit (Thornton 2013, B6): ours is the exact one, 5e-5 apart
+    assert first['betan'] == pytest.approx(0.2330248576834424, rel=2e-4)
+    assert first['betas'] == first['betan']
+
+
+@pytest.mark.parametrize('en', [0.2, 0.5, 0.9])
+@pytest.mark.parametrize('speed', [0.1, 1.0, 5.0])
+def test_restitution_coefficient_of_a_head_on_impact_is_en(en, speed):
+    impact(en, v1=(speed, 0, 0), v2=(-speed / 2, 0, 0))
+    vrel = O.bodies[0].state.vel[0] - O.bodies[1].state.vel[0]
+    assert -vrel / (1.5 * speed) == pytest.approx(en, rel=0.01)
+
+
+@pytest.mark.parametrize('en, ref', [
+    # yade-double -n -x ref_impact.py EN  (the script of impact() above, printing the velocities after the contact)
+    (0.5, (-0.9458421802398709, 0.07688234008998825, -60.61361835000215, -0.19596215933752062, 0.003612134360939296, -4.744800626811033)),
+])
+def test_oblique_impact_equals_the_reference(en, ref):
+    impact(en)
+    s0, s1 = O.bodies[0].state, O.bodies[1].state
+    ours = (s0.vel[0], s0.vel[1], s0.angVel[2], s1.vel[0], s1.vel[1], s1.angVel[2])
+    for a, b in zip(ours, ref):
+        assert a == pytest.approx(b, rel=2e-3)
+    assert s0.vel[2] == 0 and s1.vel[2] == 0
+
+
+def test_hertz_force_displacement_is_analytic():
+    """Two spheres put at given overlaps, at rest: normal force = 4/3 E* sqrt(R*) u^(3/2) (no damping)."""
+    m1, m2 = two_materials()
+    r1, r2 = 0.001, 0.002
+    O.bodies.append([utils.sphere((0, 0, 0), r1, material=m1, fixed=True), utils.sphere((0.003, 0, 0), r2, material=m2)])
+    O.engines = engines()
+    O.dt = 1e-8
+    E, _ = effective_moduli(1e9, 0.2, 0.5e9, 0.3)
+    R = r1 * r2 / (r1 + r2)
+    for u in (1e-7, 1e-6, 1e-5, 3e-5):
+        O.bodies[1].state.pos, O.bodies[1].state.vel = (r1 + r2 - u, 0, 0), (0, 0, 0)
+        O.step()
+        i = O.interactions[0, 1]
+        assert i.geom.penetrationDepth == pytest.approx(u, rel=1e-9)
+        assert i.phys.normalForce[0] == pytest.approx(4 / 3 * E * math.sqrt(R) * u**1.5, rel=1e-9)
+        assert O.forces.f(1)[0] == pytest.approx(4 / 3 * E * math.sqrt(R) * u**1.5, rel=1e-9)
+
+
+@pytest.mark.parametrize('hertzian, ref', [
+    # yade-double -n -x ref_facet.py H: a sphere thrown onto a steel facet (en=0.5, es=0.7), velocities when the contact ends
+    (False, (0.183699945655, 0.901747749763, 288.875704743, 2388)),
+    (True, (0.181597371774, 0.957531937983, 294.16016335, 2144)),
+])
+def test_sphere_on_facet_equals_the_reference(hertzian, ref):
+    m1 = O.materials.append(FrictMat(young=1e9, poisson=0.2, density=2500, frictionAngle=0.3))
+    st = O.materials.append(FrictMat(young=210e9, poisson=0.2, density=7200, frictionAngle=0.5))
+    O.bodies.append(utils.facet([(-1, -1, 0), (1, -1, 0), (0, 1, 0)], material=st))
+    O.bodies.append(utils.sphere((0, 0, 0.00099), 0.001, material=m1))
+    O.bodies[1].state.vel = (0.3, 0, -1)
+    O.engines = engines(Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.7), hertzian=hertzian)
+    O.dt = 1e-8
+    O.step()
+    g, p = O.interactions[0, 1].geom, O.interactions[0, 1].phys
+    assert g.refR1 == (1e5 if hertzian else 0.002)
+    R = 0.001 if hertzian else 0.002 * 0.001 / 0.003
+    E = 1 / ((1 - 0.04) / 210e9 + (1 - 0.04) / 1e9)
+    assert p.kno == pytest.approx(4 / 3 * E * math.sqrt(R), rel=1e-8)
+    for _ in range(100000):
+        O.step()
+        if O.interactions.countReal() == 0:
+            break
+    s = O.bodies[1].state
+    assert abs(O.iter - ref[3]) <= 2
+    for a, b in zip((s.vel[0], s.vel[2], s.angVel[1]), ref[:3]):
+        assert a == pytest.approx(b, rel=3e-3)
+
+
+def test_elastic_impact_conserves_energy():
+    """No damping, no friction: kinetic + Hertz elastic energy (2/5 kno u^(5/2)) is constant through the impact."""
+    m = O.materials.append(FrictMat(young=1e8, poisson=0.3, density=3000, frictionAngle=0))
+    O.bodies.append([utils.sphere((0, 0, 0), 0.01, material=m), utils.sphere((0.0201, 0, 0), 0.01, material=m)])
+    O.bodies[0].state.vel = (1, 0, 0)
+    law = Law2_ScGeom_MindlinPhys_Mindlin(calcEnergy=True)
+    O.engines = engines(law=law)
+    O.dt = 2e-7
+    ke0 = 0.5 * O.bodies[0].state.mass
+    worst, peak = 0, 0
+    for _ in range(8000):
+        O.step()
+        ke = sum(0.5 * b.state.mass * b.state.vel.squaredNorm() for b in O.bodies)
+        el = law.normElastEnergy()
+        peak = max(peak, el)
+        worst = max(worst, abs(ke + el - ke0) / ke0)
+    assert peak > 0.3 * ke0  # the contact really stored energy
+    assert worst < 2e-3
+    assert O.bodies[1].state.vel[0] == pytest.approx(1, rel=1e-3)  # a head-on elastic impact of equal masses swaps them
+    assert law.normDampDissip == 0 and law.frictionDissipation == 0
+
+
+def test_matchmaker_as_the_reference():
+    # yade-double -n -x ref_attrs.py
+    m = MatchMaker(matches=((1, 2, 3.), (0, 0, .5)))
+    assert m(1, 2) == 3.0 and m(2, 1) == 3.0 and m(0, 0) == 0.5
+    with pytest.raises(ValueError, match='no match for'):
+        m(3, 3)
+    for algo, value in [('avg', 6.5), ('min', 4.0), ('max', 9.0), ('harmAvg', 5.538461538461538)]:
+        assert MatchMaker(algo=algo)(1, 2, 4., 9.) == pytest.approx(value, rel=1e-15)
+    assert MatchMaker(algo='val', val=7.)(1, 2, 4., 9.) == 7.0
+    with pytest.raises(ValueError, match="algo 'biggest' not recognized"):
+        MatchMaker(algo='biggest')
+    d = MatchMaker().dict()
+    assert d['algo'] == 'avg' and d['matches'] == [] and math.isnan(d['val'])
+
+
+def test_matchmaker_picks_per_material_pair_values():
+    m1, m2 = two_materials()
+    ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(frictAngle=MatchMaker(matches=((m1, m2, 0.1),)), en=MatchMaker(matches=((m1, m2, 0.7),)))
+    O.bodies.append([utils.sphere((0, 0, 0), 0.001, material=m1), utils.sphere((0.00299, 0, 0), 0.002, material=m2)])
+    O.engines = engines(ip2)
+    O.dt = 1e-8
+    O.step()
+    p = O.interactions[0, 1].phys
+    assert p.tangensOfFrictionAngle == pytest.approx(math.tan(0.1), rel=1e-15)
+    assert p.betan == pytest.approx(0.11167565496949998, rel=2e-3)  # the reference's ratio for e = 0.7
+
+
+def test_numbers_become_constant_matchmakers_and_bad_input_is_refused():
+    ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, frictAngle=0.2)
+    assert isinstance(ip2.en, MatchMaker) and ip2.en.algo == 'val' and ip2.en.val == 0.5
+    assert ip2.frictAngle(3, 4) == 0.2
+    assert Ip2_FrictMat_FrictMat_MindlinPhys().en is None
+    with pytest.raises(ValueError):
+        Ip2_FrictMat_FrictMat_MindlinPhys(en=float('nan'))
+    with pytest.raises(TypeError):
+        Ip2_FrictMat_FrictMat_MindlinPhys(en='half')
+    # en and betan together: refused when the contact is made, with both names
+    m1, m2 = two_materials()
+    O.bodies.append([utils.sphere((0, 0, 0), 0.001, material=m1), utils.sphere((0.00299, 0, 0), 0.002, material=m2)])
+    O.engines = engines(Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, betan=0.1))
+    O.dt = 1e-8
+    with pytest.raises(Exception, match='en and betan'):
+        O.step()
+    O.engines = engines(Ip2_FrictMat_FrictMat_MindlinPhys(en=1.5))
+    with pytest.raises(Exception, match='restitution'):
+        O.step()
+
+
+def test_deprecated_attribute_warns_and_is_accepted():
+    with pytest.warns(RuntimeWarning, match='preventGranularRatcheting is deprecated'):
+        law = Law2_ScGeom_MindlinPhys_Mindlin(preventGranularRatcheting=False)
+    assert law.nothing is False
+    assert MindlinPhys().dict()['kno'] == 0
