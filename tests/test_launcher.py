@@ -211,3 +211,60 @@ def test_script_namespace_has_the_reference_launchers_names(tmp_path):
     missing = sorted(set(ref) - names)
     print("names of the reference's launcher still missing here: %d of %d" % (len(missing), len(ref)))
     assert len(missing) <= 563  # (a ratchet: 632 before this list was first checked; lower it as names come)
+
+
+# ------------------------------------------------------------------ saved simulations given to the launcher
+# (The reference prints "Running simulation <file>" for ./yade file.xml but leaves O empty and runs
+# nothing; here the file is loaded into O and run: in the background before the prompt, or, with
+# -x, until the run stops by itself.)
+
+def save_simulation(tmp_path, name, stopAfter):
+    """A falling sphere saved at iteration 5 with O.stopAtIter 5 + stopAfter; its PyRunner writes
+    O.iter to ran.txt at every step."""
+    maker = write(tmp_path, "make.py", """
+        import sys
+        O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10)),
+                     PyRunner(command='open("ran.txt", "w").write("%%d %%r" %% (O.iter, O.filename))', iterPeriod=1)]
+        O.bodies.append(sphere((0, 0, 0), 1))
+        O.dt = 1e-3
+        O.run(5, True)
+        O.stopAtIter = %s
+        O.save(sys.argv[1])
+    """ % ("O.iter + %d" % stopAfter if stopAfter else "-1"))
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(maker), str(tmp_path / name)],
+                       capture_output=True, text=True, timeout=120, cwd=str(tmp_path), env=dict(os.environ))
+    assert r.returncode == 0, r.stderr
+    return tmp_path / name
+
+
+@pytest.mark.parametrize("name", ["sim.xml", "sim.yade.gz", "sim.yade", "sim.xml.bz2"])
+def test_saved_simulation_with_x_runs_until_it_stops(tmp_path, name):
+    sim = save_simulation(tmp_path, name, 20)
+    (tmp_path / "ran.txt").unlink(missing_ok=True)
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(sim)], capture_output=True, text=True,
+                       timeout=120, cwd=str(tmp_path), env=dict(os.environ))
+    assert r.returncode == 0, r.stderr
+    assert "Running simulation %s" % sim in r.stdout
+    assert "SyntaxError" not in r.stderr
+    # it ran from iteration 5 to O.stopAtIter 25 (the runner of the last step saw O.iter 24)
+    assert (tmp_path / "ran.txt").read_text() == "24 %r" % str(sim)
+
+
+def test_saved_simulation_runs_in_the_background_before_the_prompt(tmp_path):
+    sim = save_simulation(tmp_path, "sim.yade.gz", 0)
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", str(sim)], capture_output=True, text=True,
+                       input="import time; time.sleep(0.5); print('STATE', O.running, O.iter > 5, len(O.bodies))\n",
+                       timeout=120, cwd=str(tmp_path), env=dict(os.environ))
+    assert r.returncode == 0, r.stderr
+    assert "STATE True True 1" in r.stdout
+
+
+def test_saved_simulation_missing_or_corrupt(tmp_path):
+    r = run("-n", "-x", tmp_path / "nothere.xml")
+    assert r.returncode == 1
+    assert "nothere.xml" in r.stderr and "Traceback" not in r.stderr
+    bad = tmp_path / "bad.yade.gz"
+    bad.write_bytes(b"\x1f\x8bnot really gzip")
+    r = run("-n", "-x", bad)
+    assert r.returncode == 1
+    assert "bad.yade.gz" in r.stderr and "Traceback" not in r.stderr
