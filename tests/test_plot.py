@@ -274,11 +274,12 @@ def test_plot_without_data(plot):
 
 # ------------------------------------------------------------------ plot() headless, via the launcher
 
-def test_plot_headless_writes_png_beside_script(tmp_path):
+def test_plot_headless_writes_png_in_the_current_folder(tmp_path):
     pytest.importorskip("matplotlib")
     sub = tmp_path / "scripts"
     sub.mkdir()
-    r = run_script(sub, "deposition.py", """
+    script = sub / "deposition.py"
+    script.write_text(textwrap.dedent("""
         from yade import plot
         plot.plots = {'t': ('a', None, 'b'), 't ': (lambda: ['c'],)}
         for i in range(10):
@@ -286,16 +287,34 @@ def test_plot_headless_writes_png_beside_script(tmp_path):
         fig = plot.plot()
         print('RETURNED', type(fig).__name__)
         plot.plot(subPlots=False)
-    """)
+    """))
+    env = dict(os.environ)
+    for k in ("DISPLAY", "WAYLAND_DISPLAY", "YADE_BATCH", "MPLBACKEND"):
+        env.pop(k, None)
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", "scripts/deposition.py"],
+                       capture_output=True, text=True, timeout=180, env=env, cwd=str(tmp_path))
     assert r.returncode == 0, r.stdout + r.stderr
     assert "Traceback" not in r.stderr
-    png = sub / "deposition.plot.png"
+    png = tmp_path / "deposition.plot.png"  # the current folder, not the script's
     assert png.is_file() and png.stat().st_size > 1000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert str(png) in r.stdout  # says where
     assert "RETURNED Figure" in r.stdout
-    assert (sub / "deposition.plot.2.png").is_file()  # second figure of subPlots=False
-    assert not (tmp_path / "deposition.plot.png").exists()
+    assert (tmp_path / "deposition.plot.2.png").is_file()  # second figure of subPlots=False
+    assert not (sub / "deposition.plot.png").exists()
+
+
+def test_plot_twin_axes_lines_have_distinct_colors(plot):
+    pytest.importorskip("matplotlib")
+    from matplotlib.colors import to_rgba
+    for i in range(3):
+        plot.addData(t=i, a=i, b=2 * i, c=3 * i, d=4 * i)
+    plot.plots = {"t": ("a", "b", None, "c", ("d", "k:"))}
+    fig = plot.plot(noShow=True)
+    left, right = fig.axes
+    colors = [to_rgba(l.get_color()) for l in left.get_lines() + right.get_lines()]
+    assert len(set(colors)) == 4  # (a twin axis restarts the color cycle unless told otherwise)
+    assert colors[3] == to_rgba("k")  # a format's own color is kept
 
 
 def test_plot_module_import_does_not_load_matplotlib(tmp_path):
@@ -307,3 +326,137 @@ def test_plot_module_import_does_not_load_matplotlib(tmp_path):
     """)
     assert r.returncode == 0, r.stdout + r.stderr
     assert "MPL False" in r.stdout
+
+
+# ------------------------------------------------------------------ addAutoData
+
+def test_addAutoData_evaluates_plot_names(plot):
+    from yade import O
+    import yade
+    O.reset()
+    O.dt = 1e-3
+    O.engines = [yade.ForceResetter(), yade.NewtonIntegrator(gravity=(0, 0, -10))]
+    O.bodies.append(yade.utils.sphere((0, 0, 0), 1))
+    plot.plots = {"O.iter": ("O.time", "O.bodies[0].state.pos", None, "nonexistent_name", "O.tags")}
+    try:
+        for i in range(3):
+            O.step()
+            plot.addAutoData()
+    finally:
+        O.reset()
+    assert plot.data["O.iter"] == [1, 2, 3]
+    assert plot.data["O.time"] == pytest.approx([0.001, 0.002, 0.003])
+    # damped integrator: z = -8e-6, -24e-6, -48e-6 (reference: same positions for this sphere)
+    assert plot.data["O.bodies[0].state.pos_z"] == pytest.approx([-8e-6, -2.4e-5, -4.8e-5], rel=1e-12)
+    assert "nonexistent_name" not in plot.data and "O.tags" not in plot.data  # left out, with a warning
+
+
+# ------------------------------------------------------------------ saveGnuplot, savePylab, savePlotSequence
+
+def fill_example(plot):
+    plot.plots = {"i": ("a", "b", None, "c"), "t": ("a", ("d", "r--"))}
+    for k in range(4):
+        plot.addData(i=k, t=k * 0.5, a=k * k, b=1.0 / (k + 1), c=-k, d=k + 0.25)
+    plot.labels = {"a": "$A$"}
+
+
+# The reference's saveGnuplot on the same data (yade-double -n -x on a script doing fill_example and
+# plot.saveGnuplot('gp')), from its fourth line on (the third says when it was created).
+REFERENCE_GNUPLOT = """\
+#
+set term wxt 0 persist
+set xlabel 'i'
+set grid
+set datafile missing 'nan'
+set ylabel '$A$,b'
+set y2label 'c'
+set y2tics
+plot  "< bzcat gp.data.bz2" using 5:1 title '\u2190 $A$(i)' with lines, "< bzcat gp.data.bz2" using 5:2 title '\u2190 b(i)' with lines, "< bzcat gp.data.bz2" using 5:3 title 'c(i) \u2192' with lines axes x1y2
+set term wxt 1 persist
+set xlabel 't'
+set grid
+set datafile missing 'nan'
+set ylabel '$A$,d'
+plot  "< bzcat gp.data.bz2" using 6:1 title '\u2190 $A$(t)' with lines, "< bzcat gp.data.bz2" using 6:4 title '\u2190 d(t)' with lines
+"""
+
+# and its data file (the same as saveDataTxt's)
+REFERENCE_GNUPLOT_DATA = """\
+# a\t\tb\t\tc\t\td\t\ti\t\tt
+0\t1.0\t0\t0.25\t0\t0.0
+1\t0.5\t-1\t1.25\t1\t0.5
+4\t0.3333333333333333\t-2\t2.25\t2\t1.0
+9\t0.25\t-3\t3.25\t3\t1.5
+"""
+
+
+def test_saveGnuplot_as_the_reference(plot, tmp_path):
+    fill_example(plot)
+    ret = plot.saveGnuplot(str(tmp_path / "gp"))
+    assert ret == str(tmp_path / "gp.gnuplot")
+    lines = (tmp_path / "gp.gnuplot").read_text(encoding="utf-8").splitlines(keepends=True)
+    assert lines[:2] == ["#!/usr/bin/env gnuplot\n", "#\n"] and lines[2].startswith("# created ")
+    assert "".join(lines[3:]) == REFERENCE_GNUPLOT
+    assert bz2.decompress((tmp_path / "gp.data.bz2").read_bytes()).decode() == REFERENCE_GNUPLOT_DATA
+
+
+def test_saveGnuplot_options(plot, tmp_path):
+    fill_example(plot)
+    ret = plot.saveGnuplot(str(tmp_path / "g"), term="png", extension=".png", timestamp=True, comment="hello",
+                           title="T", varData=True)
+    assert ret.startswith(str(tmp_path / "g_")) and ret.endswith(".gnuplot")
+    base = os.path.basename(ret)[:-len(".gnuplot")]
+    text = pathlib.Path(ret).read_text(encoding="utf-8")
+    assert "# hello\n" in text
+    assert 'dataFile="< bzcat %s.data.bz2"\n' % base in text
+    assert "set term png; set output '%s.0.png'\n" % base in text
+    assert "set title 'T'\n" in text
+    assert "plot  dataFile using 5:1" in text
+    assert (tmp_path / (base + ".data.bz2")).is_file()
+
+
+def test_saveGnuplot_script_runs_in_gnuplot(plot, tmp_path):
+    import shutil
+    if not shutil.which("gnuplot") or not shutil.which("bzcat"):
+        pytest.skip("gnuplot is not installed")
+    fill_example(plot)
+    plot.saveGnuplot(str(tmp_path / "gp"), term="png", extension=".png")
+    r = subprocess.run(["gnuplot", "gp.gnuplot"], cwd=str(tmp_path), capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    for i in (0, 1):
+        png = tmp_path / ("gp.%d.png" % i)
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_savePylab_script_draws_the_data(plot, tmp_path):
+    pytest.importorskip("matplotlib")
+    fill_example(plot)
+    ret = plot.savePylab(str(tmp_path / "pyl"), title="T")
+    assert ret == str(tmp_path / "pyl.py")
+    assert bz2.decompress((tmp_path / "pyl.data.bz2").read_bytes()).decode() == REFERENCE_GNUPLOT_DATA
+    out = tmp_path / "run"
+    out.mkdir()
+    r = subprocess.run(["/usr/bin/python3", ret, "fig"], cwd=str(out), capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert (out / "fig.0.png").stat().st_size > 1000 and (out / "fig.1.png").stat().st_size > 1000
+
+
+def test_savePlotSequence(plot, tmp_path):
+    pytest.importorskip("matplotlib")
+    plot.plots = {"i": ("a",), "t": ("b", None, "c")}
+    for k in range(5):
+        plot.addData(i=k, t=k * .1, a=k, b=2 * k, c=3 * k)
+    base = str(tmp_path / "seq")
+    frames = plot.savePlotSequence(base, stride=2, imgRatio=(4, 3), title="T", titleFrames=2, lastFrames=3)
+    # frames of 2, 4 and 5 records (reference: files seq-000.png, seq-001.png, ...)
+    assert frames == [base + "-title.png"] * 2 + [base + "-%03d.png" % i for i in range(3)] + [base + "-002.png"] * 3
+    for f in set(frames):
+        assert pathlib.Path(f).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    import struct
+    header = pathlib.Path(base + "-000.png").read_bytes()[16:24]  # (the PNG's IHDR: width, height)
+    assert struct.unpack(">II", header) == (400, 300)  # 4 x 3 inches at 100 dpi
+    with pytest.raises(ValueError):
+        plot.savePlotSequence(base, stride=0)
+    plot.resetData()
+    with pytest.raises(ValueError):
+        plot.savePlotSequence(base)

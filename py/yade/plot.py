@@ -7,8 +7,9 @@ Typical use::
     O.engines += [PyRunner(command='plot.addData(t=O.time, Ek=kineticEnergy(), unbalanced=unbalancedForce())',
                            iterPeriod=100)]
     ...
-    plot.plot()                       # live window, or <script>.plot.png when there is no display
+    plot.plot()                       # live window, or ./<script>.plot.png when there is no display
     plot.saveDataTxt('data.txt.bz2')  # all columns, bzip2-compressed
+    plot.saveGnuplot('history')       # history.gnuplot + history.data.bz2, for gnuplot
 
 * :data:`data` maps each variable name to the list of its values, one per :func:`addData` call;
   a variable missing in a call gets NaN, a new variable is back-filled with NaN.
@@ -20,7 +21,13 @@ Typical use::
 * :data:`labels` maps variable names to the text shown in axis labels and legends.
 
 matplotlib is imported only when a figure is made; without a usable display (``yade -n``, no
-``DISPLAY``) the non-interactive Agg backend is used and :func:`plot` writes a PNG file.
+``DISPLAY``) the non-interactive Agg backend is used and :func:`plot` writes a PNG file in the
+current folder.
+
+Other outputs: :func:`saveGnuplot` (a gnuplot script and its data), :func:`savePylab` (a
+standalone Python script and its data), :func:`savePlotSequence` (PNG frames of the plots as the
+data grow, for a movie). :func:`addAutoData` records the variables of :data:`plots`, each name
+being evaluated as a Python expression.
 """
 import bz2
 import gzip
@@ -30,8 +37,8 @@ import os
 import sys
 
 __all__ = ['data', 'plots', 'labels', 'legendLoc', 'autozoom', 'scientific', 'live', 'liveInterval',
-           'componentSeparator', 'addData', 'reset', 'resetData', 'plot', 'saveDataTxt', 'splitData',
-           'reverseData']
+           'componentSeparator', 'addData', 'addAutoData', 'reset', 'resetData', 'plot', 'saveDataTxt',
+           'saveGnuplot', 'savePylab', 'savePlotSequence', 'splitData', 'reverseData']
 
 nan = float('nan')
 
@@ -141,6 +148,60 @@ def addData(*d_in, **kw):
         col.append(row.get(name, nan))
 
 
+_autoNamespace = {}
+
+
+def _evalNamespace():
+    """Globals for addAutoData: yade's names, then the running script's (__main__) on top."""
+    if not _autoNamespace:
+        import yade
+        _autoNamespace.update({k: getattr(yade, k) for k in dir(yade) if not k.startswith('_')})
+        try:
+            from yade import utils
+            _autoNamespace.update({k: getattr(utils, k) for k in dir(utils) if not k.startswith('_')})
+        except ImportError:
+            pass
+    ns = dict(_autoNamespace)
+    main = sys.modules.get('__main__')
+    if main is not None:
+        ns.update(vars(main))
+    return ns
+
+
+def _plotNames():
+    """The variable names of :data:`plots` (x names, then y names), each once, in order."""
+    names = []
+    for _, x, left, right in _specs():
+        for name in [x] + [y for y, _ in left + right]:
+            if name not in names:
+                names.append(name)
+    return names
+
+
+def addAutoData():
+    """Append one record holding every variable of :data:`plots`, each name evaluated as a Python
+    expression (``plot.plots = {'O.iter': ('O.time', 'unbalancedForce()')}``) in the running
+    script's namespace (with yade's names); a name whose evaluation raises is left out of the
+    record (NaN) with a warning."""
+    ns = _evalNamespace()
+    record = {}
+    for name in _plotNames():
+        try:
+            record[name] = eval(name, ns)
+        except Exception as e:
+            print('plot.addAutoData: cannot evaluate %r (%s: %s); left out' % (name, type(e).__name__, e))
+    bad = []
+    for name, value in record.items():  # (a value addData would refuse is left out too)
+        try:
+            _expand(name, value, {})
+        except ValueError:
+            bad.append(name)
+            print('plot.addAutoData: %r is a %s, not a number; left out' % (name, type(value).__name__))
+    for name in bad:
+        del record[name]
+    addData(record)
+
+
 def resetData():
     """Clear all recorded data; keep :data:`plots` and :data:`labels`."""
     data.clear()
@@ -202,6 +263,176 @@ def saveDataTxt(fileName, vars=None, headers=None):
         cols = [data[v] for v in vars]
         for i in range(n):
             f.write('\t'.join(str(c[i]) for c in cols) + '\n')
+
+
+def _stamped(baseName, timestamp):
+    import time
+    return baseName + time.strftime('_%Y%m%d_%H:%M') if timestamp else baseName
+
+
+def _createdLine():
+    import time
+    return 'created %s (%s)' % (time.asctime(), time.strftime('%Y%m%d_%H:%M'))
+
+
+def _gnuplotString(text):
+    return "'" + str(text).replace("'", "''") + "'"  # (two quotes stand for one in a gnuplot '...' string)
+
+
+def saveGnuplot(baseName, term='wxt', extension=None, timestamp=False, comment=None, title=None, varData=False):
+    """Write a gnuplot script drawing :data:`plots`, and the data it reads.
+
+    The data go to ``<baseName>.data.bz2`` (as :func:`saveDataTxt`, all variables sorted by name:
+    column *k* is the *k*-th name), the script to ``<baseName>.gnuplot``, which reads the data
+    file by its name alone: run gnuplot in their folder (``gnuplot -persist name.gnuplot``). One
+    plot per x variable, the variables after ``None`` on the right axis (y2).
+
+    :param term: gnuplot terminal (``wxt``, ``x11``, ``png``, ``pdfcairo``...).
+    :param extension: when given (``'.png'``), each plot is written to ``<baseName>.<i><extension>``
+        instead of a window.
+    :param timestamp: append ``_YYYYmmdd_HH:MM`` to *baseName*.
+    :param comment: a line written as a comment at the top of the script.
+    :param title: title of every plot.
+    :param varData: name the data source once, in a gnuplot variable ``dataFile``.
+    :return: the name of the gnuplot script.
+    """
+    baseName = _stamped(os.fspath(baseName), timestamp)
+    vars = sorted(data.keys())
+    saveDataTxt(baseName + '.data.bz2', vars)
+    column = {name: i + 1 for i, name in enumerate(vars)}
+    dataName = os.path.basename(baseName) + '.data.bz2'
+    source = '"< bzcat %s"' % dataName
+    out = ['#!/usr/bin/env gnuplot', '#', '# ' + _createdLine(), '#']
+    if comment:
+        out.append('# ' + str(comment).replace('\n', ' '))
+    if varData:
+        out.append('dataFile=%s' % source)
+        source = 'dataFile'
+    if extension and not extension.startswith('.'):
+        extension = '.' + extension
+    specs = _specs()
+    _warnMissing(specs)
+    for i, (_, x, left, right) in enumerate(specs):
+        if x not in column:
+            continue
+        if extension:
+            out.append("set term %s; set output %s" % (term, _gnuplotString(os.path.basename(baseName) + '.%d%s' % (i, extension))))
+        else:
+            out.append('set term %s %d persist' % (term, i))
+        out += ['set xlabel %s' % _gnuplotString(_label(x)), 'set grid', "set datafile missing 'nan'"]
+        if title:
+            out.append('set title %s' % _gnuplotString(title))
+        left = [(y, f) for y, f in left if y in column]
+        right = [(y, f) for y, f in right if y in column]
+        if left:
+            out.append('set ylabel %s' % _gnuplotString(','.join(_label(y) for y, _ in left)))
+        if right:
+            out += ['set y2label %s' % _gnuplotString(','.join(_label(y) for y, _ in right)), 'set y2tics']
+        curves = ['%s using %d:%d title %s with lines' % (source, column[x], column[y], _gnuplotString('\u2190 %s(%s)' % (_label(y), _label(x))))
+                  for y, _ in left]
+        curves += ['%s using %d:%d title %s with lines axes x1y2' % (source, column[x], column[y], _gnuplotString('%s(%s) \u2192' % (_label(y), _label(x))))
+                   for y, _ in right]
+        if curves:
+            out.append('plot  ' + ', '.join(curves))
+    with open(baseName + '.gnuplot', 'w', encoding='utf-8') as f:
+        f.write('\n'.join(out) + '\n')
+    return baseName + '.gnuplot'
+
+
+def savePylab(baseName, timestamp=False, title=None):
+    """Write a standalone Python script drawing :data:`plots` with matplotlib, and its data.
+
+    The data go to ``<baseName>.data.bz2`` (as :func:`saveDataTxt`), the script to
+    ``<baseName>.py``; it reads the data file from its own folder and shows the figures (or, run
+    as ``python3 <baseName>.py out``, writes ``out.0.png``, ``out.1.png``, ...). It needs only
+    numpy and matplotlib.
+
+    :return: the name of the script.
+    """
+    baseName = _stamped(os.fspath(baseName), timestamp)
+    vars = sorted(data.keys())
+    saveDataTxt(baseName + '.data.bz2', vars)
+    figures = []
+    for _, x, left, right in _specs():
+        figures.append((x, [(y, f) for y, f in left], [(y, f) for y, f in right]))
+    labelsUsed = {name: _label(name) for name in vars}
+    script = """#!/usr/bin/env python3
+# %(created)s by yade.plot.savePylab: the plots of %(base)s.data.bz2
+import os, sys
+import numpy
+import matplotlib
+if len(sys.argv) > 1:
+    matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+
+names = %(names)r
+labels = %(labels)r
+figures = %(figures)r  # (x, left [(y, format)], right [(y, format)])
+title = %(title)r
+columns = numpy.loadtxt(os.path.join(os.path.dirname(os.path.abspath(__file__)), %(dataName)r), ndmin=2)
+data = {name: columns[:, i] for i, name in enumerate(names)}
+for i, (x, left, right) in enumerate(figures):
+    fig, ax = plt.subplots()
+    ax.set_xlabel(labels.get(x, x))
+    k = 0
+    for side, ys in enumerate((left, right)):
+        if not ys:
+            continue
+        axis = ax if side == 0 else ax.twinx()
+        for y, fmt in ys:
+            if x in data and y in data:
+                axis.plot(data[x], data[y], *([fmt] if fmt else []), label=labels.get(y, y), **({} if fmt else {'color': 'C%%d' %% (k %% 10)}))
+            k += 1
+        axis.set_ylabel(', '.join(labels.get(y, y) for y, _ in ys))
+        axis.legend(loc='upper left' if side == 0 else 'upper right')
+    if title:
+        ax.set_title(title)
+    if len(sys.argv) > 1:
+        fig.savefig('%%s.%%d.png' %% (sys.argv[1], i))
+if len(sys.argv) <= 1:
+    plt.show()
+""" % {'created': _createdLine(), 'base': os.path.basename(baseName), 'names': vars, 'labels': labelsUsed,
+       'figures': figures, 'title': title, 'dataName': os.path.basename(baseName) + '.data.bz2'}
+    with open(baseName + '.py', 'w', encoding='utf-8') as f:
+        f.write(script)
+    return baseName + '.py'
+
+
+def savePlotSequence(fileBase, stride=1, imgRatio=(5, 7), title=None, titleFrames=20, lastFrames=30):
+    """Save the plots as they looked while the data grew, one PNG per *stride* records
+    (``<fileBase>-000.png``, ``-001.png``, ...; the last frame has all the records), e.g. to make
+    a movie of them. Each figure is *imgRatio* (width, height) inches.
+
+    :param title: when given, a first frame ``<fileBase>-title.png`` showing this text.
+    :return: the list of frame files in movie order: the title frame *titleFrames* times, the
+        frames, then the last frame repeated *lastFrames* times (so that they stay on screen).
+    """
+    if stride < 1:
+        raise ValueError('plot.savePlotSequence: stride must be at least 1 (got %r)' % (stride,))
+    fileBase = os.fspath(fileBase)
+    n = _rowCount()
+    if n == 0 or not plots:
+        raise ValueError('plot.savePlotSequence: nothing to plot (plot.plots or plot.data is empty)')
+    ends = list(range(stride, n, stride)) + [n]
+    plt = _pyplot()
+    frames = []
+    for i, rows in enumerate(ends):
+        figs = createPlots(subPlots=True, rows=rows)
+        fig = figs[0]
+        fig.set_size_inches(*imgRatio)
+        path = '%s-%03d.png' % (fileBase, i)
+        fig.savefig(path)
+        plt.close(fig)
+        frames.append(path)
+    out = []
+    if title:
+        fig = plt.figure(figsize=imgRatio)
+        fig.text(.5, .5, str(title), ha='center', va='center', wrap=True, fontsize='xx-large')
+        path = '%s-title.png' % fileBase
+        fig.savefig(path)
+        plt.close(fig)
+        out += [path] * titleFrames
+    return out + frames + [frames[-1]] * lastFrames
 
 
 # ---------------------------------------------------------------------------------------------
@@ -287,12 +518,27 @@ def _warnMissing(specs):
         print('Missing columns in plot.data, plotted as NaN: ', ', '.join(names))
 
 
-def _fillAxes(ax, x, left, right):
-    """Draw the lines of one x variable on ax (and a twin axis for the right side)."""
+def _fmtHasColor(fmt):
+    """Whether a matplotlib format string such as 'r--' or 'C3o' names a color."""
+    try:
+        from matplotlib.axes._base import _process_plot_format
+        return _process_plot_format(fmt)[2] is not None
+    except Exception:  # (a private helper: fall back to the one-letter colors)
+        return any(c in 'bgrcmykw' for c in fmt)
+
+
+def _fillAxes(ax, x, left, right, rows=None):
+    """Draw the lines of one x variable on ax (and a twin axis for the right side), at most rows
+    records. Lines without a color of their own take the colors of the cycle in turn, across both
+    axes (a twin axis would otherwise start the cycle again, drawing its first line in the color
+    of the left axis' first)."""
     n = len(data.get(x, ())) if x in data else max((len(v) for v in data.values()), default=0)
+    if rows is not None:
+        n = min(n, rows)
     xs = _column(x, n)
     lines = []
     ax.set_xlabel(_label(x))
+    k = 0
     for side, (axis, ys) in enumerate(((ax, left), (None, right))):
         if not ys:
             continue
@@ -300,7 +546,9 @@ def _fillAxes(ax, x, left, right):
             axis = ax.twinx()
         for y, fmt in ys:
             args = (xs, _column(y, n)) + ((fmt,) if fmt else ())
-            line, = axis.plot(*args, label=_label(y))
+            kw = {} if fmt and _fmtHasColor(fmt) else {'color': 'C%d' % (k % 10)}
+            k += 1
+            line, = axis.plot(*args, label=_label(y), **kw)
             lines.append((line, x, y))
         axis.set_ylabel(', '.join(_label(y) for y, _ in ys))
         try:
@@ -357,14 +605,15 @@ def _interactiveBackend():
 
 
 def _figureBase():
-    """Path prefix of the PNG written when nothing can be shown: <script dir>/<script name>."""
+    """Path prefix of the PNG written when nothing can be shown: <current folder>/<script name>
+    (<current folder>/yade without a script)."""
     script = sys.argv[0] if sys.argv else ''
+    base = 'yade'
     if script and os.path.isfile(script):
         base = os.path.basename(script)
         if base.endswith('.py'):
             base = base[:-3]
-        return os.path.join(os.path.dirname(os.path.abspath(script)), base)
-    return os.path.join(os.getcwd(), 'yade')
+    return os.path.join(os.getcwd(), base)
 
 
 def _savePng(figs):
@@ -375,8 +624,9 @@ def _savePng(figs):
         path = base + suffix
         try:
             fig.savefig(path)
-        except OSError:  # e.g. read-only script directory: use the working directory
-            path = os.path.join(os.getcwd(), os.path.basename(base) + suffix)
+        except OSError:  # e.g. a read-only current folder: the temporary folder
+            import tempfile
+            path = os.path.join(tempfile.gettempdir(), os.path.basename(base) + suffix)
             fig.savefig(path)
         paths.append(path)
         print('plot: no display available, figure saved to %s' % path)
@@ -407,8 +657,9 @@ def _startLive(fig):
         pass
 
 
-def createPlots(subPlots=True):
-    """Create the matplotlib figure(s) for :data:`plots`; return the list of figures."""
+def createPlots(subPlots=True, rows=None):
+    """Create the matplotlib figure(s) for :data:`plots` (with the first *rows* records only, if
+    given); return the list of figures."""
     plt = _pyplot()
     specs = _specs()
     _warnMissing(specs)
@@ -416,16 +667,16 @@ def createPlots(subPlots=True):
     if subPlots or len(specs) <= 1:
         fig = plt.figure()
         fig._yadeLines = []
-        rows, cols = _subplotGrid(len(specs))
+        gridRows, gridCols = _subplotGrid(len(specs))
         for i, (_, x, left, right) in enumerate(specs):
-            ax = fig.add_subplot(rows, cols, i + 1)
-            fig._yadeLines += _fillAxes(ax, x, left, right)
+            ax = fig.add_subplot(gridRows, gridCols, i + 1)
+            fig._yadeLines += _fillAxes(ax, x, left, right, rows)
         figs.append(fig)
     else:
         for _, x, left, right in specs:
             fig = plt.figure()
             ax = fig.add_subplot(1, 1, 1)
-            fig._yadeLines = _fillAxes(ax, x, left, right)
+            fig._yadeLines = _fillAxes(ax, x, left, right, rows)
             figs.append(fig)
     for fig in figs:
         try:
@@ -442,9 +693,9 @@ def plot(noShow=False, subPlots=True):
     ``plot.plot(noShow=True).savefig('file.pdf')`` saves it. Otherwise the figure is shown in a
     window that is updated live when a display and an interactive matplotlib backend are available
     (returns None); when not (``yade -n``, no ``DISPLAY``), it is written to
-    ``<script>.plot.png`` in the directory of the running script (``<cwd>/yade.plot.png`` without
-    a script; more figures: ``<script>.plot.2.png``, ...), the path is printed, and the figure
-    (or list of figures) is returned. No display never raises.
+    ``<script>.plot.png`` in the current folder (``yade.plot.png`` without a script; more figures:
+    ``<script>.plot.2.png``, ...), the path is printed, and the figure (or list of figures) is
+    returned. No display never raises.
     """
     figs = createPlots(subPlots=subPlots)
     ret = figs[0] if len(figs) == 1 else figs
