@@ -394,6 +394,9 @@ def test_labels_dead_and_bad_ids():
     O.engines = [ForceEngine(ids=[-1])]
     with pytest.raises(IndexError):
         O.step()
+    O.engines = [RotationEngine(ids=[a], rotationAxis=(0, 0, 0), angularVelocity=1.)]
+    with pytest.raises(ValueError, match='rotationAxis'):
+        O.step()
 
 
 # --- a facet turned by a RotationEngine, as in a rotating drum --------------------------------------

@@ -1,5 +1,6 @@
 #include <core/Scene.hpp>
 #include <pkg/common/RotationEngine.hpp>
+#include <stdexcept>
 
 namespace yade {
 
@@ -9,6 +10,8 @@ void RotationEngine::postLoad() {
 
 void RotationEngine::apply(const std::vector<int>& bodyIds) {
     const Scene& s = *scene;
+    if (angularVelocity != 0 && !(rotationAxis.squaredNorm() > 0))
+        throw std::invalid_argument(getClassName() + ".rotationAxis is zero: give the direction of the rotation axis");
     const Vector3r omega = angularVelocity * rotationAxis;
     // the turn of one step: positions then lie on the circle after every step, whatever dt
     const Matrix3r turn = AngleAxisr(angularVelocity * s.dt, rotationAxis).toRotationMatrix();
