@@ -156,6 +156,13 @@ void Omega::reset() {
     scenes[current] = std::make_shared<Scene>();
 }
 
+void Omega::resetAll() {
+    if (inLoopThread()) throw std::runtime_error("O.resetAllScenes() cannot be called from inside the simulation loop");
+    pause();
+    scenes[0] = std::make_shared<Scene>();
+    scenes[1] = std::make_shared<Scene>();
+}
+
 void Omega::setScene(std::shared_ptr<Scene> s) {
     if (inLoopThread()) throw std::runtime_error("a scene cannot be loaded from inside the simulation loop");
     pause();

@@ -36,6 +36,8 @@ public:
     bool isRunning() const { return running; }
     bool inLoopThread() const { return std::this_thread::get_id() == loopThreadId; }
     void reset();       // a new empty scene
+    void resetAll();    // both scenes new and empty (the current one stays current)
+    int sceneIndex() const { return current; } // 0 the primary scene, 1 the secondary one
     void switchWorld(); // toggle between the primary and the secondary scene
     // Replaces the current scene (after O.load); stops the loop first.
     void setScene(std::shared_ptr<Scene> s);

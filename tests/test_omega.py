@@ -301,3 +301,56 @@ def test_exitNoBacktrace_while_running(tmp_path):
     """)
     assert r.returncode == 0  # (the reference hangs here)
     assert took < 30
+
+
+# ------------------------------------------------------------------ the reference's other O methods
+
+def test_labeledEngine_runEngine_dynDtAvailable(y):
+    O = y.O
+    falling_sphere(y, [y.ForceResetter(), y.NewtonIntegrator(gravity=(0, 0, -10), label='nn')])
+    assert O.labeledEngine('nn') is O.engines[1]
+    with pytest.raises(ValueError, match="No engine labeled"):
+        O.labeledEngine('zz')  # (reference: ValueError, same text)
+    O.runEngine(O.engines[1])  # reference: O.iter 0, vel (0, 0, -0.008)
+    assert O.iter == 0 and O.time == 0
+    assert O.bodies[0].state.vel[2] == pytest.approx(-0.008, rel=1e-12)
+    assert O.dynDtAvailable is False
+    O.engines = O.engines + [y.GlobalStiffnessTimeStepper()]
+    assert O.dynDtAvailable is True
+
+
+def test_scene_strings_and_tmp(y, tmp_path):
+    O = y.O
+    falling_sphere(y)
+    O.run(3, True)
+    data = O.sceneToString()
+    O.saveTmp('a')
+    O.run(2, True)
+    O.stringToScene(data)
+    assert O.iter == 3 and len(O.bodies) == 1
+    xml = O.tmpToString('a')
+    assert xml.lstrip().startswith('<') and 'iter="3"' in xml
+    f = tmp_path / 'a.xml'
+    O.tmpToFile(str(f), 'a')
+    O.reset()
+    O.load(str(f))
+    assert O.iter == 3
+    name = O.tmpFilename()
+    assert name != O.tmpFilename() and os.path.isdir(os.path.dirname(name))
+
+
+def test_scene_switching_names(y):
+    O = y.O
+    assert O.thisScene == 0
+    O.bodies.append(y.utils.sphere((0, 0, 0), 1))
+    O.switchScene()
+    assert O.thisScene == 1 and len(O.bodies) == 0
+    O.bodies.append(y.utils.sphere((0, 0, 0), 1))
+    O.switchScene()
+    O.resetThisScene()
+    assert O.thisScene == 0 and len(O.bodies) == 0
+    O.switchScene()
+    assert len(O.bodies) == 1
+    O.resetAllScenes()
+    assert O.thisScene == 1 and len(O.bodies) == 0
+    O.switchScene()

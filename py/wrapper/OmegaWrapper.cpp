@@ -51,6 +51,26 @@ static void collectLabels(const std::shared_ptr<Serializable>& obj, std::set<Ser
     }
 }
 
+// The engine or functor of O.engines (or held by one) with that label; null if none.
+static std::shared_ptr<Serializable> findLabeled(const std::shared_ptr<Serializable>& obj, const std::string& label, std::set<Serializable*>& seen) {
+    if (!obj || !seen.insert(obj.get()).second) return nullptr;
+    std::string own;
+    if (auto* e = dynamic_cast<Engine*>(obj.get())) own = e->label;
+    else if (auto* f = dynamic_cast<Functor*>(obj.get())) own = f->label;
+    else return nullptr;
+    if (own == label) return obj;
+    for (const AttrInfo& a : classInfoOf(*obj).attrs) {
+        void* p = a.address(*obj);
+        if (a.kind == AttrKind::Ptr) {
+            if (auto r = findLabeled(a.getPtr(p), label, seen)) return r;
+        } else if (a.kind == AttrKind::PtrVector) {
+            for (const auto& child : a.getPtrVector(p))
+                if (auto r = findLabeled(child, label, seen)) return r;
+        }
+    }
+    return nullptr;
+}
+
 void injectLabels(const std::vector<std::shared_ptr<Engine>>& engines) {
     py::module_ builtins = py::module_::import("builtins");
     std::set<Serializable*> seen;
@@ -476,10 +496,14 @@ void bindOmega(py::module_& m) {
                 }
                 scene().setDt(v);
             }, "Time step [s]; a negative value activates the time stepper of O.engines (GlobalStiffnessTimeStepper), which then sets it")
-            .def_property_readonly("dynDt", [](OmegaProxy&) {
+            .def_property("dynDt", [](OmegaProxy&) {
                 const GlobalStiffnessTimeStepper* stepper = timeStepper();
                 return stepper && stepper->active;
-            }, "Whether a time stepper in O.engines sets O.dt (dynamic time step)")
+            }, [](OmegaProxy&, bool v) {
+                GlobalStiffnessTimeStepper* stepper = timeStepper();
+                if (stepper) stepper->active = v;
+                else if (v) throw std::runtime_error("No TimeStepper found in O.engines.");
+            }, "Whether a time stepper in O.engines sets O.dt (dynamic time step); True activates it (RuntimeError without one), False deactivates it")
             .def_property("stopAtIter", [](OmegaProxy&) { return scene().stopAtIter; },
                     [](OmegaProxy&, long long v) { scene().stopAtIter = v; }, "The loop stops when O.iter reaches this value")
             .def_property_readonly("running", [](OmegaProxy&) { return omega().isRunning(); })
@@ -571,6 +595,40 @@ void bindOmega(py::module_& m) {
                 }
                 injectLabels(loaded->getEngines());
             }, py::arg("mark") = "", "Load the scene saved by O.saveTmp under that slot name")
+            .def("labeledEngine", [](OmegaProxy&, const std::string& label) {
+                std::set<Serializable*> seen;
+                for (const auto& e : scene().getEngines())
+                    if (auto r = findLabeled(e, label, seen)) return py::cast(r);
+                throw py::value_error("No engine labeled `" + label + "'");
+            }, py::arg("label"), "The engine or functor of O.engines with that label (a label also names it in the script's namespace)")
+            .def("runEngine", [](OmegaProxy&, const std::shared_ptr<Engine>& e) {
+                if (!e) throw py::type_error("O.runEngine: the engine is None");
+                if (omega().isRunning()) throw std::runtime_error("O.runEngine() while the simulation runs: O.pause() first");
+                py::gil_scoped_release nogil;
+                Scene& s = scene();
+                s.forces.resize(s.bodies.size());
+                s.interactions.resizeBodies(s.bodies.size());
+                e->scene = &s;
+                e->action();
+            }, py::arg("engine"), "Run one engine once in the current scene; O.iter and O.time do not change")
+            .def_property_readonly("dynDtAvailable", [](OmegaProxy&) { return timeStepper() != nullptr; },
+                    "Whether O.engines holds a time stepper, active or not")
+            .def("resetThisScene", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the current scene with an empty one (as O.reset())")
+            .def("resetCurrentScene", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the current scene with an empty one (as O.reset())")
+            .def("resetAllScenes", [](OmegaProxy&) { omega().resetAll(); }, release(), "Replace both scenes (see O.switchScene) with empty ones")
+            .def("switchScene", [](OmegaProxy&) { omega().switchWorld(); }, release(), "Toggle between the primary and the secondary scene (as O.switchWorld())")
+            .def_property_readonly("thisScene", [](OmegaProxy&) { return omega().sceneIndex(); }, "The current scene: 0 the primary, 1 the secondary")
+            .def("disableGdb", [](OmegaProxy&) {}, "Does nothing (no debugger handlers are installed)")
+            .def("tmpToString", [](OmegaProxy&, const std::string& slot) {
+                auto it = omega().tmpSlots.find(slot);
+                if (it == omega().tmpSlots.end()) throw std::runtime_error("No memory-saved simulation :memory:" + slot + " (O.saveTmp first)");
+                std::string xml;
+                {
+                    py::gil_scoped_release nogil;
+                    xml = SceneIO::save(*SceneIO::load(it->second), true);
+                }
+                return xml;
+            }, py::arg("mark") = "", "The simulation saved by O.saveTmp under that slot name, as XML text")
             .def("lsTmp", [](OmegaProxy&) {
                 std::vector<std::string> r;
                 for (const auto& kv : omega().tmpSlots) r.push_back(kv.first);

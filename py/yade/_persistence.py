@@ -76,3 +76,42 @@ Omega.load = load
 Omega.reload = reload
 Omega.filename = property(lambda self: _lastFile[0],
                           doc='The file the simulation was last saved to or loaded from (None if none yet)')
+
+
+def sceneToString(self):
+    """The whole scene as bytes (the binary format of O.save); O.stringToScene reads it back."""
+    return self._toBytes(False)
+
+
+def stringToScene(self, data, mark=''):
+    """Replace the scene by one from O.sceneToString (bytes; str is taken as XML text)."""
+    if isinstance(data, str):
+        data = data.encode('utf-8')
+    self._fromBytes(_decompress(data))
+
+
+def tmpToFile(self, fileName, mark=''):
+    """Write the simulation saved by O.saveTmp(mark) to fileName as XML."""
+    with open(os.fspath(fileName), 'w', encoding='utf-8') as f:
+        f.write(self.tmpToString(mark))
+
+
+_tmpDir = [None]
+_tmpCount = [0]
+
+
+def tmpFilename(self):
+    """A new file name in a private temporary folder, removed (with its files) when the program ends."""
+    if _tmpDir[0] is None:
+        import atexit
+        import shutil
+        _tmpDir[0] = tempfile.mkdtemp(prefix='yade-')
+        atexit.register(shutil.rmtree, _tmpDir[0], True)
+    _tmpCount[0] += 1
+    return os.path.join(_tmpDir[0], 'tmp-%d' % _tmpCount[0])
+
+
+Omega.sceneToString = sceneToString
+Omega.stringToScene = stringToScene
+Omega.tmpToFile = tmpToFile
+Omega.tmpFilename = tmpFilename
