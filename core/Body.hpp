@@ -9,6 +9,7 @@ namespace yade {
 
 class Body : public Serializable {
 public:
+    static constexpr const char* classDoc = "A particle (the manual's Body, 1.2.1): shape, material, state and bound, with its id in O.bodies, a collision mask and a group id when clumped.";
     using id_t = int;
     id_t id = -1;
     int mask = 1; // bodies collide only when (mask1 & mask2) != 0

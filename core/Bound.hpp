@@ -6,6 +6,7 @@ namespace yade {
 
 class Bound : public Serializable {
 public:
+    static constexpr const char* classDoc = "Approximate volume of a body (1.2.1), used by the collider for the first, cheap pass of contact detection.";
     Vector3r color = Vector3r(1, 1, 1);
     Vector3r min = Vector3r::Constant(NaN);
     Vector3r max = Vector3r::Constant(NaN);

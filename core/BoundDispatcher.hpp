@@ -7,6 +7,7 @@ namespace yade {
 
 class BoundFunctor : public Functor {
 public:
+    static constexpr const char* classDoc = "Bo1 functor: computes a body's Bound from its Shape (called by BoundDispatcher).";
     template <class V> void visit(V& v) { Functor::visit(v); }
     // Creates or updates `bound` for `shape` placed at `state`.
     virtual void go(const Shape& shape, std::shared_ptr<Bound>& bound, const State& state, const Body& body);
@@ -26,6 +27,7 @@ public:
 
 class BoundDispatcher : public Dispatcher {
 public:
+    static constexpr const char* classDoc = "Dispatcher of Bo1 functors: picks for each body the functor that handles its Shape class and updates its Bound.";
     std::vector<std::shared_ptr<BoundFunctor>> functors;
     template <class V> void visit(V& v) {
         Dispatcher::visit(v);

@@ -9,6 +9,7 @@ namespace yade {
 
 class Dispatcher : public Engine {
 public:
+    static constexpr const char* classDoc = "Engine that picks a functor by the classes of its arguments (1.2.1), falling back to base classes.";
     template <class V> void visit(V& v) { Engine::visit(v); }
     // Functors as the base type, for label lookup and chain checks.
     virtual std::vector<std::shared_ptr<Functor>> functorsBase() const { return {}; }

@@ -8,6 +8,7 @@ class Scene;
 
 class Engine : public Serializable {
 public:
+    static constexpr const char* classDoc = "One step of the simulation loop; O.engines runs them in order every iteration (1.2.1).";
     bool dead = false;
     int ompThreads = -1;
     std::string label;
@@ -29,12 +30,14 @@ public:
 
 class GlobalEngine : public Engine {
 public:
+    static constexpr const char* classDoc = "Engine acting on the whole scene (all bodies or all interactions) each time it runs.";
     template <class V> void visit(V& v) { Engine::visit(v); }
 };
 
 // Acts on selected bodies only.
 class PartialEngine : public Engine {
 public:
+    static constexpr const char* classDoc = "Engine acting on a subset of bodies, given by their ids.";
     std::vector<int> ids;
     template <class V> void visit(V& v) {
         Engine::visit(v);

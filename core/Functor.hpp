@@ -8,6 +8,7 @@ class Scene;
 
 class Functor : public Serializable {
 public:
+    static constexpr const char* classDoc = "Function object that a Dispatcher chooses according to the classes of its arguments (1.2.1).";
     std::string label;
     Scene* scene = nullptr; // set by the dispatcher before calls
     template <class V> void visit(V& v) {

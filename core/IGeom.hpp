@@ -6,6 +6,7 @@ namespace yade {
 
 class IGeom : public Serializable {
 public:
+    static constexpr const char* classDoc = "Geometry of a contact between two bodies (the manual's IGeom), computed by an Ig2 functor.";
     template <class V> void visit(V& v) { Serializable::visit(v); }
     // The record of a contact this object shows (an object that Python holds while the contact's
     // values live in a ContactPool), or null: its own members. See lib/factory/ClassRegistry.hpp.

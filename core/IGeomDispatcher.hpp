@@ -17,6 +17,7 @@ struct BodyColumns {
 
 class IGeomFunctor : public Functor {
 public:
+    static constexpr const char* classDoc = "Ig2 functor: computes the contact geometry (IGeom) of two shapes, or says there is no contact.";
     template <class V> void visit(V& v) { Functor::visit(v); }
     // Returns whether the shapes are in contact (always true with force=true for an existing
     // contact); creates or updates I.geom. shift2 is the periodic shift added to body 2.
@@ -86,6 +87,7 @@ public:
 
 class IGeomDispatcher : public Dispatcher {
 public:
+    static constexpr const char* classDoc = "Dispatcher of Ig2 functors: picks one per pair of Shape classes (swapping the pair when only the reverse order is handled).";
     std::vector<std::shared_ptr<IGeomFunctor>> functors;
     template <class V> void visit(V& v) {
         Dispatcher::visit(v);

@@ -6,6 +6,7 @@ namespace yade {
 
 class IPhys : public Serializable {
 public:
+    static constexpr const char* classDoc = "Physical properties of a contact (stiffnesses, forces; the manual's IPhys), computed by an Ip2 functor.";
     template <class V> void visit(V& v) { Serializable::visit(v); }
     // The record of a contact this object shows (an object that Python holds while the contact's
     // values live in a ContactPool), or null: its own members. See lib/factory/ClassRegistry.hpp.

@@ -8,6 +8,7 @@ namespace yade {
 
 class IPhysFunctor : public Functor {
 public:
+    static constexpr const char* classDoc = "Ip2 functor: computes the contact physics (IPhys) of a new contact from the two bodies' materials.";
     template <class V> void visit(V& v) { Functor::visit(v); }
     // Creates I.phys for a new contact (called once, when I.geom first appears).
     virtual void go(const std::shared_ptr<Material>& m1, const std::shared_ptr<Material>& m2, Interaction& I);
@@ -21,6 +22,7 @@ public:
 
 class IPhysDispatcher : public Dispatcher {
 public:
+    static constexpr const char* classDoc = "Dispatcher of Ip2 functors: picks one per pair of Material classes (either order).";
     std::vector<std::shared_ptr<IPhysFunctor>> functors;
     template <class V> void visit(V& v) {
         Dispatcher::visit(v);

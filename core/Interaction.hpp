@@ -8,6 +8,7 @@ namespace yade {
 
 class Interaction : public Serializable {
 public:
+    static constexpr const char* classDoc = "A pair of bodies (1.2.1): potential when only their bounds overlap, real once it has geom (IGeom) and phys (IPhys).";
     Body::id_t id1 = -1, id2 = -1;
     long long iterMadeReal = -1;
     long long iterLastSeen = -1; // last iteration the collider saw the bounds overlap

@@ -8,6 +8,7 @@ namespace yade {
 
 class LawFunctor : public Functor {
 public:
+    static constexpr const char* classDoc = "Law2 functor (constitutive law): turns a contact's IGeom and IPhys into forces and torques on its two bodies.";
     template <class V> void visit(V& v) { Functor::visit(v); }
     // Applies forces on both bodies; returns false when the interaction must be removed.
     virtual bool go(IGeom& geom, IPhys& phys, Interaction& I);
@@ -46,6 +47,7 @@ public:
 
 class LawDispatcher : public Dispatcher {
 public:
+    static constexpr const char* classDoc = "Dispatcher of Law2 functors: picks one per (IGeom class, IPhys class) pair.";
     std::vector<std::shared_ptr<LawFunctor>> functors;
     template <class V> void visit(V& v) {
         Dispatcher::visit(v);

@@ -6,6 +6,7 @@ namespace yade {
 
 class Material : public Serializable {
 public:
+    static constexpr const char* classDoc = "Mechanical properties shared by bodies (1.2.1): density and a label; held in O.materials.";
     int id = -1; // index in O.materials, -1 while not appended
     std::string label;
     Real density = 1000;

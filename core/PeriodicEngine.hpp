@@ -7,6 +7,7 @@ namespace yade {
 
 class PeriodicEngine : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Engine that runs only every iterPeriod steps, virtPeriod of simulated time or realPeriod seconds of wall time (whichever comes first), at most nDo times.";
     Real virtPeriod = 0, realPeriod = 0;
     long long iterPeriod = 0, nDo = -1, nDone = 0, iterLast = 0, firstIterRun = 0;
     bool initRun = false;

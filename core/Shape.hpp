@@ -6,6 +6,7 @@ namespace yade {
 
 class Shape : public Serializable {
 public:
+    static constexpr const char* classDoc = "Geometry of a particle (1.2.1), independent of its position and orientation (those are in State).";
     Vector3r color = Vector3r(1, 1, 1);
     bool wire = false;
     bool highlight = false;

@@ -10,6 +10,7 @@ namespace yade {
 
 class State : public Serializable {
 public:
+    static constexpr const char* classDoc = "Kinematic state of a body (1.2.1): position, orientation, linear and angular velocity, mass, inertia and blocked degrees of freedom.";
     // Degrees of freedom that the integrator leaves untouched (bits of blockedDOFs).
     enum DOF : int { DOF_NONE = 0, DOF_X = 1, DOF_Y = 2, DOF_Z = 4, DOF_RX = 8, DOF_RY = 16, DOF_RZ = 32, DOF_ALL = 63 };
     State() = default;

@@ -29,6 +29,7 @@ struct AttrInfo {
 
 struct ClassInfo {
     std::string name, baseName;
+    std::string doc; // the class's own T::classDoc (empty if it declares none); Python's __doc__ starts with it
     const std::type_info* type = nullptr;
     std::function<std::shared_ptr<Serializable>()> factory;
     std::vector<AttrInfo> attrs; // all attributes, inherited ones first
@@ -84,6 +85,17 @@ template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>
 // members); every attribute is read and written there.
 template <class T, class = void> struct HasViewTarget : std::false_type {};
 template <class T> struct HasViewTarget<T, std::void_t<decltype(std::declval<T&>().viewTarget())>> : std::true_type {};
+
+// Classes that describe themselves: `static constexpr const char* classDoc = "...";` in the class
+// body. A derived class that declares none would inherit its base's, so ownClassDoc takes it only
+// when T's classDoc is another object than Base's.
+template <class T, class = void> struct HasClassDoc : std::false_type {};
+template <class T> struct HasClassDoc<T, std::void_t<decltype(T::classDoc)>> : std::true_type {};
+template <class T, class Base> const char* ownClassDoc() {
+    if constexpr (!HasClassDoc<T>::value) return "";
+    else if constexpr (std::is_same_v<T, Base> || !HasClassDoc<Base>::value) return T::classDoc;
+    else return &T::classDoc == &Base::classDoc ? "" : T::classDoc;
+}
 
 // Builds the AttrInfo table of class T by visiting a prototype instance.
 template <class T> struct AttrCollector {
@@ -149,6 +161,7 @@ template <class T, class Base> void ClassRegistry::add(const char* name) {
     const bool root = std::is_same_v<T, Base>;
     ClassInfo& info = insert(name, root ? "" : ClassRegistry::get(typeid(Base)).name.c_str(), typeid(T));
     info.factory = [] { return std::static_pointer_cast<Serializable>(std::make_shared<T>()); };
+    info.doc = ownClassDoc<T, Base>();
     info.size = sizeof(T);
     info.align = alignof(T);
     if constexpr (HasViewTarget<T>::value) { // (contact geometry and physics: kept in ContactPools)

@@ -10,6 +10,7 @@ namespace yade {
 // through their shared_ptr only, never from a raw pointer.)
 class Serializable {
 public:
+    static constexpr const char* classDoc = "Root of every class exposed to Python and saved to files: its attributes are read, set and saved by name.";
     virtual ~Serializable() = default;
     template <class V> void visit(V&) {}
     // Name of the most derived registered class (looked up in the class registry).

@@ -8,6 +8,7 @@ namespace yade {
 
 class Bo1_Sphere_Aabb : public BoundFunctorOf<Sphere, Aabb> {
 public:
+    static constexpr const char* classDoc = "Bo1 functor computing the Aabb of a Sphere: center ± radius, enlarged by aabbEnlargeFactor (3.1.3).";
     Real aabbEnlargeFactor = -1;
     template <class V> void visit(V& v) {
         BoundFunctor::visit(v);

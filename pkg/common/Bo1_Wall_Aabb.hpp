@@ -8,6 +8,7 @@ namespace yade {
 
 class Bo1_Wall_Aabb : public BoundFunctorOf<Wall, Aabb> {
 public:
+    static constexpr const char* classDoc = "Bo1 functor computing the Aabb of a Wall: infinite along the two axes of its plane.";
     template <class V> void visit(V& v) { BoundFunctor::visit(v); }
     void go(const Wall& w, Aabb& aabb, const State& state, const Body& body) override;
 };

@@ -6,6 +6,7 @@ namespace yade {
 
 class Box : public Shape {
 public:
+    static constexpr const char* classDoc = "Geometry of a cuboid of half-sizes extents, centered at the body's position and turned by its orientation.";
     Vector3r extents = Vector3r::Constant(NaN);
     template <class V> void visit(V& v) {
         Shape::visit(v);

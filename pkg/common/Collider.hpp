@@ -6,6 +6,7 @@ namespace yade {
 
 class Collider : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Approximate collision detection (3.1): creates potential interactions between bodies whose Bounds overlap.";
     std::shared_ptr<BoundDispatcher> boundDispatcher = std::make_shared<BoundDispatcher>();
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);

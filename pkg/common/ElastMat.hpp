@@ -6,6 +6,7 @@ namespace yade {
 
 class ElastMat : public Material {
 public:
+    static constexpr const char* classDoc = "Elastic material: Young's modulus and Poisson's ratio (used as the ratio of shear to normal contact stiffness).";
     Real young = 1e9;
     Real poisson = 0.25;
     template <class V> void visit(V& v) {

@@ -7,6 +7,7 @@ namespace yade {
 
 class Facet : public Shape {
 public:
+    static constexpr const char* classDoc = "Geometry of a triangle, used for boundaries (3.1); vertices are relative to the body's position (the center of the inscribed circle).";
     std::vector<Vector3r> vertices = std::vector<Vector3r>(3, Vector3r::Constant(NaN));
     Vector3r normal = Vector3r::Constant(NaN);
     Real area = NaN;

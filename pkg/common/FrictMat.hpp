@@ -6,6 +6,7 @@ namespace yade {
 
 class FrictMat : public ElastMat {
 public:
+    static constexpr const char* classDoc = "Elastic material with Coulomb contact friction (frictionAngle), see ElastMat.";
     Real frictionAngle = 0.5;
     template <class V> void visit(V& v) {
         ElastMat::visit(v);

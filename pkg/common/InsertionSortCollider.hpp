@@ -7,6 +7,7 @@ namespace yade {
 
 class InsertionSortCollider : public Collider {
 public:
+    static constexpr const char* classDoc = "Collider using sweep and prune with insertion sort on three axes (3.1.3); bounds are enlarged by the Verlet distance so that it reruns only when bodies moved farther than that.";
     Real verletDist = -0.5;
     long long numAction = 0, numReinit = 0;
     template <class V> void visit(V& v) {

@@ -19,6 +19,7 @@ namespace yade {
 
 class InteractionLoop : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Engine that runs the three dispatchers over every interaction (1.2.1): Ig2 (geometry), Ip2 (physics of a new contact) and Law2 (forces).";
     std::shared_ptr<IGeomDispatcher> geomDispatcher = std::make_shared<IGeomDispatcher>();
     std::shared_ptr<IPhysDispatcher> physDispatcher = std::make_shared<IPhysDispatcher>();
     std::shared_ptr<LawDispatcher> lawDispatcher = std::make_shared<LawDispatcher>();

@@ -9,6 +9,7 @@ namespace yade {
 
 class PyRunner : public PeriodicEngine {
 public:
+    static constexpr const char* classDoc = "Periodic engine that runs a Python command (command) in the script's namespace, with PeriodicEngine's timing.";
     std::string command;
     template <class V> void visit(V& v) {
         PeriodicEngine::visit(v);

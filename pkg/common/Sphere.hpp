@@ -6,6 +6,7 @@ namespace yade {
 
 class Sphere : public Shape {
 public:
+    static constexpr const char* classDoc = "Geometry of a spherical particle, given by its radius.";
     Real radius = NaN;
     template <class V> void visit(V& v) {
         Shape::visit(v);

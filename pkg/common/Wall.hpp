@@ -6,6 +6,7 @@ namespace yade {
 
 class Wall : public Shape {
 public:
+    static constexpr const char* classDoc = "Geometry of an infinite axis-aligned plane through the body's position, normal to axis; sense -1/+1 makes only one side interact.";
     int axis = 0;  // 0, 1, 2 for x, y, z
     int sense = 0; // which side interacts: -1 negative, +1 positive, 0 both
     template <class V> void visit(V& v) {

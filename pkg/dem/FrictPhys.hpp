@@ -6,6 +6,7 @@ namespace yade {
 
 class NormPhys : public IPhys {
 public:
+    static constexpr const char* classDoc = "Contact physics with a normal stiffness kn and normal force normalForce.";
     Real kn = 0;
     Vector3r normalForce = Vector3r::Zero();
     template <class V> void visit(V& v) {
@@ -18,6 +19,7 @@ public:
 
 class NormShearPhys : public NormPhys {
 public:
+    static constexpr const char* classDoc = "Contact physics with normal and shear stiffnesses (kn, ks) and forces (normalForce, shearForce).";
     Real ks = 0;
     Vector3r shearForce = Vector3r::Zero();
     template <class V> void visit(V& v) {
@@ -30,6 +32,7 @@ public:
 
 class FrictPhys : public NormShearPhys {
 public:
+    static constexpr const char* classDoc = "Contact physics of the Cundall-Strack law: NormShearPhys with the tangent of the contact friction angle (tangensOfFrictionAngle).";
     Real tangensOfFrictionAngle = NaN;
     template <class V> void visit(V& v) {
         NormShearPhys::visit(v);

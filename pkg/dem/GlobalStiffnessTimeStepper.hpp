@@ -7,6 +7,7 @@ namespace yade {
 
 class GlobalStiffnessTimeStepper : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Engine setting O.dt from the stiffness of the current contacts (3.5.5): Δt = timestepSafetyCoefficient · min sqrt(2m/K) (3.5.18-3.5.20).";
     bool active = true;
     int timeStepUpdateInterval = 1;
     Real timestepSafetyCoefficient = 0.8;

@@ -6,6 +6,7 @@ namespace yade {
 
 class GravityEngine : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Engine adding the weight m·g to every dynamic body (an alternative to NewtonIntegrator.gravity).";
     Vector3r gravity = Vector3r::Zero();
     int mask = 0;
     template <class V> void visit(V& v) {

@@ -8,6 +8,7 @@ namespace yade {
 
 class Ig2_Sphere_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Sphere_Sphere_ScGeom, Sphere, Sphere, ScGeom> {
 public:
+    static constexpr const char* classDoc = "Ig2 functor: exact contact of two spheres (3.3.1), overlap, normal and contact point, then the shear update (3.3.2).";
     Real interactionDetectionFactor = 1;
     template <class V> void visit(V& v) {
         IGeomFunctor::visit(v);

@@ -9,6 +9,7 @@ namespace yade {
 
 class Law2_ScGeom_FrictPhys_CundallStrack : public LawFunctorBatched<Law2_ScGeom_FrictPhys_CundallStrack, ScGeom, FrictPhys> {
 public:
+    static constexpr const char* classDoc = "Law2 functor: the Cundall-Strack contact law (3.4), Fn = kn·uN, incremental shear force Ft += ks·Δus limited by |Ft| ≤ Fn·tan φ (Mohr-Coulomb).";
     bool neverErase = false;
     template <class V> void visit(V& v) {
         LawFunctor::visit(v);

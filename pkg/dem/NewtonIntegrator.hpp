@@ -20,6 +20,7 @@ struct StabilityError : std::runtime_error {
 
 class NewtonIntegrator : public GlobalEngine {
 public:
+    static constexpr const char* classDoc = "Engine integrating the motion of every body from its forces (3.5): leapfrog positions (3.5.1), orientation update (3.5.2), Cundall's non-viscous damping (3.5.12) and gravity.";
     Real damping = 0.2;
     Vector3r gravity = Vector3r::Zero();
     bool dampGravity = true;

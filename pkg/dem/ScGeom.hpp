@@ -9,6 +9,7 @@ namespace yade {
 // Contact of two bodies that are spheres at least locally: normal, contact point and radii.
 class GenericSpheresContact : public IGeom {
 public:
+    static constexpr const char* classDoc = "Contact geometry shared by sphere-like contacts: normal and the two radii refR1, refR2.";
     Vector3r normal = Vector3r::Zero();       // unit vector from body 1 towards body 2
     Vector3r contactPoint = Vector3r::Zero(); // middle of the overlap zone (3.3.4)
     Real refR1 = 0, refR2 = 0;                // reference radii (0 or less for a flat boundary)
@@ -24,6 +25,7 @@ public:
 
 class ScGeom : public GenericSpheresContact {
 public:
+    static constexpr const char* classDoc = "Contact geometry of two spheres (or a sphere and a wall/facet/box): penetrationDepth, normal, contactPoint and the incremental shear (3.3.2).";
     Real penetrationDepth = NaN;
     Vector3r shearInc = Vector3r::Zero(); // shear displacement increment of this step (3.3.6)
     // Rotation of the contact plane since the last step: tilt (normal_old × normal_new) and

@@ -99,4 +99,25 @@ std::vector<int> Shop::coordinations(const Scene& scene, const Vector3r& lo, con
     return counts;
 }
 
+Shop::SphereColumns Shop::sphereColumns(const Scene& scene, int mask) {
+    SphereColumns c;
+    for (const auto& b : scene.bodies) {
+        if (!b) continue;
+        const Sphere* s = sphereOf(*b);
+        if (!s || (mask != -1 && (b->mask & mask) == 0)) continue;
+        c.ids.push_back(b->id);
+        c.pos.push_back(b->state->pos());
+        c.radius.push_back(s->radius);
+        c.matIds.push_back(b->material ? b->material->id : -1);
+    }
+    return c;
+}
+
+Real Shop::spheresMass(const Scene& scene, int mask) {
+    Real m = 0;
+    for (const auto& b : scene.bodies)
+        if (b && sphereOf(*b) && (mask == 0 || mask == -1 || (b->mask & mask) != 0)) m += b->state->mass();
+    return m;
+}
+
 } // namespace yade

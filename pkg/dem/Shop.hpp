@@ -17,5 +17,15 @@ namespace Shop {
     Real spheresVolume(const Scene& scene, int mask);
     // Number of real interactions of each body whose position is inside [lo, hi].
     std::vector<int> coordinations(const Scene& scene, const Vector3r& lo, const Vector3r& hi);
+    // The spheres whose mask shares a bit with `mask` (-1: all), in id order: id, center, radius and
+    // the index of their material in O.materials (-1 if none); for yade.export.
+    struct SphereColumns {
+        std::vector<int> ids, matIds;
+        std::vector<Vector3r> pos;
+        std::vector<Real> radius;
+    };
+    SphereColumns sphereColumns(const Scene& scene, int mask);
+    // Total mass of the spheres whose mask shares a bit with `mask` (0 or -1: all).
+    Real spheresMass(const Scene& scene, int mask);
 } // namespace Shop
 } // namespace yade

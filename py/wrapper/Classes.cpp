@@ -219,6 +219,65 @@ static void bindExtras(py::module_& m) {
     bindDispFunctor2D<LawDispatcher, IGeom, IPhys>("The functor that would handle this (IGeom, IPhys) pair (None if none)");
 }
 
+// How help() shows the default of an attribute: repr of the value in a new object; objects by
+// their class name (an address would change from one run to the next).
+static std::string defaultRepr(const AttrInfo& a, py::handle value) {
+    if (a.kind == AttrKind::Ptr) return value.is_none() ? "None" : py::str(value.get_type().attr("__name__")).cast<std::string>() + "()";
+    if (a.kind == AttrKind::PtrVector) {
+        std::string r = "[";
+        for (py::handle v : value) r += (r.size() > 1 ? ", " : "") + py::str(v.get_type().attr("__name__")).cast<std::string>() + "()";
+        return r + "]";
+    }
+    return py::repr(value).cast<std::string>();
+}
+
+// Python's __doc__ of every class: its classDoc, then its attributes with default values and
+// descriptions (own ones first, then those inherited, base by base); each attribute's property
+// doc also gets its default. help(Sphere) and IPython's Sphere? show both.
+static void setClassDocs(py::module_& m) {
+    const ClassRegistry& registry = ClassRegistry::instance();
+    for (const ClassInfo* info : registry.all()) {
+        py::object cls = m.attr(info->name.c_str());
+        py::object proto;
+        try {
+            proto = py::cast(info->factory());
+        } catch (std::exception&) {
+        }
+        std::string doc = info->doc.empty() ? "(no class description)" : info->doc;
+        if (!info->baseName.empty()) doc += "\n\nDerives from " + info->baseName + ".";
+        std::string own, inherited;
+        std::string lastOwner;
+        for (size_t i = 0; i < info->attrs.size(); ++i) {
+            const AttrInfo& a = info->attrs[i];
+            if (a.has(Attr::hidden)) continue;
+            std::string def = "?";
+            if (proto) {
+                try {
+                    def = defaultRepr(a, proto.attr(a.name.c_str()));
+                } catch (py::error_already_set&) {
+                }
+            }
+            const std::string line = "    " + a.name + " = " + def + "\n        " + a.doc + (a.has(Attr::readonly) ? " (read-only)" : "") + "\n";
+            if (i >= info->ownAttrsBegin) {
+                own += line;
+                py::object prop = cls.attr("__dict__")[a.name.c_str()];
+                std::string pdoc = py::str(prop.attr("__doc__")).cast<std::string>();
+                prop.attr("__doc__") = pdoc + " [default: " + def + "]";
+            } else {
+                std::string owner; // the base class that declares attribute i
+                for (const ClassInfo* c = registry.find(info->baseName); c; c = c->baseName.empty() ? nullptr : registry.find(c->baseName))
+                    if (i >= c->ownAttrsBegin && i < c->attrs.size()) owner = c->name;
+                if (owner != lastOwner) inherited += "  inherited from " + owner + ":\n";
+                lastOwner = owner;
+                inherited += line;
+            }
+        }
+        if (!own.empty() || !inherited.empty()) doc += "\n\nAttributes (name = default value, then description):\n" + own + inherited;
+        cls.attr("__doc__") = doc;
+        cls.attr("__module__") = "yade.wrapper"; // where scripts import them from (py/yade/wrapper.py)
+    }
+}
+
 void bindAllClasses(py::module_& m) {
 #define YADE_CLASS(Class, Base) bindClass<Class, Base>(m, #Class);
 #include <core/classes.def>
@@ -226,6 +285,7 @@ void bindAllClasses(py::module_& m) {
 #include <pkg/dem/classes.def>
 #undef YADE_CLASS
     bindExtras(m);
+    setClassDocs(m);
 }
 
 } // namespace yade

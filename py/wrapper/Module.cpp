@@ -7,6 +7,8 @@
 #include <pkg/common/PyRunner.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pybind11/eval.h>
+#include <pybind11/stl.h>
+#include <lib/factory/ClassRegistry.hpp>
 #include <py/wrapper/ArraysWrapper.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
@@ -48,6 +50,16 @@ PYBIND11_MODULE(_yade, m) {
 #endif
         yade::omega().scene().setThreads(n);
     }, "Set the number of OpenMP threads");
+    m.def("_classNames", [] {
+        std::vector<std::string> names;
+        for (const yade::ClassInfo* c : yade::ClassRegistry::instance().all()) names.push_back(c->name);
+        return names;
+    }, "Names of all registered classes, bases before derived classes (yade.wrapper, yade.system)");
+    { // yade.config.sourceRoot: this file is <root>/py/wrapper/Module.cpp
+        std::string root = __FILE__;
+        for (int up = 0; up < 3 && root.find('/') != std::string::npos; ++up) root = root.substr(0, root.rfind('/'));
+        m.attr("_sourceRoot") = root;
+    }
 #ifdef _OPENMP
     m.attr("openmp") = true;
 #else

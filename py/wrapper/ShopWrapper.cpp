@@ -2,6 +2,7 @@
 #include <pkg/dem/Shop.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
@@ -21,6 +22,17 @@ void bindShop(py::module_& m) {
             "Total volume of spheres (with mask sharing a bit with `mask`; 0 or -1: all)");
     m.def("coordinations", [](const Vector3r& lo, const Vector3r& hi) { return Shop::coordinations(omega().scene(), lo, hi); },
             "Number of real interactions of each body whose position is in [lo, hi]");
+    m.def("getSpheresMass", [](int mask) { return Shop::spheresMass(omega().scene(), mask); }, py::arg("mask") = -1,
+            "Total mass of spheres (with mask sharing a bit with `mask`; 0 or -1: all)");
+    m.def("_sphereColumns", [](int mask) {
+        const Shop::SphereColumns c = Shop::sphereColumns(omega().scene(), mask);
+        const py::ssize_t n = (py::ssize_t)c.ids.size();
+        py::array_t<Real> pos({n, (py::ssize_t)3});
+        auto p = pos.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) p(i, k) = c.pos[i][k];
+        return py::make_tuple(py::array_t<int>(n, c.ids.data()), pos, py::array_t<Real>(n, c.radius.data()), py::array_t<int>(n, c.matIds.data()));
+    }, py::arg("mask") = -1, "(ids, centers N×3, radii, material indices) of the spheres whose mask shares a bit with `mask` (-1: all); for yade.export");
 }
 
 } // namespace yade

@@ -7,9 +7,18 @@ if 'OMP_NUM_THREADS' not in _os.environ:
 from ._yade import *  # noqa: F401,F403  (O, classes, math types)
 from ._yade import O, setNumThreads  # noqa: F401
 
-version = '0.1.0'
+from . import config, wrapper, system, _customConverters  # noqa: E402,F401  (module layout of Yade)
+from . import math, minieigenHP  # noqa: E402,F401
+version = config.version
 
 from . import _persistence  # noqa: E402,F401  (O.save, O.load, O.reload)
 from ._engines import *  # noqa: E402,F401,F403  (engine1 + engine2, CentralGravityEngine)
 from . import utils, geom  # noqa: E402,F401
 from . import pack  # noqa: E402,F401
+from . import ymport, export  # noqa: E402,F401
+
+# `from yade import *` gives the classes, O and the helper modules a script uses by name (utils, pack,
+# ...), not the submodules whose names would hide Python's own (math) or the reference's layout
+# modules (config, system, wrapper...). Keep this block last.
+__all__ = [_n for _n in dict(globals()) if not _n.startswith('_') and _n not in (
+    'math', 'minieigenHP', 'config', 'system', 'wrapper', 'ymport', 'export', 'libVersions')]

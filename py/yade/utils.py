@@ -3,11 +3,15 @@ import math
 import random
 
 from ._yade import O, Body, Sphere, Facet, Wall, Box, Aabb, State, FrictMat, Material, Vector3, Quaternion
-from ._yade import PWaveTimeStep, unbalancedForce, kineticEnergy, getSpheresVolume
+from ._yade import PWaveTimeStep, unbalancedForce, kineticEnergy, getSpheresVolume, getSpheresMass, Matrix3
 
 __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMaterial', 'randomColor', 'PWaveTimeStep',
            'unbalancedForce', 'kineticEnergy', 'getSpheresVolume', 'aabbExtrema', 'avgNumInteractions', 'porosity',
-           'typedEngine']
+           'typedEngine', 'getSpheresMass', 'aabbDim', 'inscribedCircleCenter', 'ptInAABB', 'sumForces', 'sumTorques', 'forcesOnPlane',
+           'forcesOnCoordPlane', 'getStress', 'bodyStressTensors', 'normalShearStressTensors', 'fabricTensor', 'momentum',
+           'angularMomentum', 'maxOverlapRatio', 'numIntrsOfEachBody', 'intrsOfEachBody', 'getBodyIdsContacts', 'psd', 'setRefSe3',
+           'shiftBodies', 'calm', 'randomizeColors', 'highlightNone', 'wireAll', 'wireNone', 'wireNoSpheres', 'setBodyPosition',
+           'setBodyVelocity', 'setBodyAngularVelocity', 'setBodyOrientation', 'setBodyColor', 'runningInBatch', 'replaceCollider']
 
 
 def typedEngine(name):
@@ -205,6 +209,349 @@ def porosity(volume=-1):
         d = hi - lo
         volume = d[0] * d[1] * d[2]
     return (volume - getSpheresVolume()) / volume
+
+def aabbDim(cutoff=0.0, centers=False):
+    """Size (max - min) of aabbExtrema(cutoff, centers)."""
+    lo, hi = aabbExtrema(cutoff, centers)
+    return tuple(hi - lo)
+
+
+def inscribedCircleCenter(v1, v2, v3):
+    """Center of the circle inscribed in the triangle v1 v2 v3 (where utils.facet puts the body)."""
+    return _inscribedCircleCenter(Vector3(v1), Vector3(v2), Vector3(v3))
+
+
+def ptInAABB(p, minPt, maxPt):
+    """Whether point p is inside the axis-aligned box [minPt, maxPt] (bounds included)."""
+    return all(minPt[i] <= p[i] <= maxPt[i] for i in range(3))
+
+
+# Per-contact and per-body data as NumPy arrays (no Python loop over the scene).
+def _np():
+    import numpy
+    return numpy
+
+
+def _contacts():
+    """Arrays of the real contacts: id1, id2, normalForce, shearForce, normal, contactPoint, penetrationDepth."""
+    return O.interactions.arrays()
+
+
+def _bodyPos():
+    return _np().array(O.bodies.arrays().pos)
+
+
+def _matrix(a):
+    return Matrix3(*[float(x) for x in _np().asarray(a).reshape(9)])
+
+
+def _ids(ids):
+    np = _np()
+    ids = np.asarray(list(ids), dtype=int)
+    n = len(O.bodies)
+    if len(ids) and (ids.min() < 0 or ids.max() >= n):
+        raise IndexError('body id out of range (0..%d): %s' % (n - 1, list(ids[(ids < 0) | (ids >= n)])))
+    return ids
+
+
+def sumForces(ids, direction):
+    """Sum over bodies `ids` of their force (O.forces, last step) projected on `direction`."""
+    np = _np()
+    f = np.asarray(O.bodies.arrays().force)[_ids(ids)]
+    return float(f.sum(axis=0).dot(np.asarray(tuple(direction), dtype=float)))
+
+
+def sumTorques(ids, axis, axisPt):
+    """Sum over bodies `ids` of their moment about the axis through axisPt along `axis`:
+    axis·(T + (x - axisPt) × F), with F and T their force and torque of the last step."""
+    np = _np()
+    ids = _ids(ids)
+    a = O.bodies.arrays()
+    r = _bodyPos()[ids] - np.asarray(tuple(axisPt), dtype=float)
+    m = np.asarray(a.torque)[ids] + np.cross(r, np.asarray(a.force)[ids])
+    return float(m.sum(axis=0).dot(np.asarray(tuple(axis), dtype=float)))
+
+
+def forcesOnPlane(planePt, normal):
+    """Sum of the contact forces (normal and shear) of the contacts whose two bodies lie on either
+    side of the plane through planePt normal to `normal`: the force the side the normal points to
+    exerts on the other one."""
+    np = _np()
+    c = _contacts()
+    if len(c['id1']) == 0:
+        return Vector3.Zero
+    pos = _bodyPos()
+    n = np.asarray(tuple(normal), dtype=float)
+    d1 = (pos[c['id1']] - np.asarray(tuple(planePt), dtype=float)).dot(n)
+    d2 = (pos[c['id2']] - np.asarray(tuple(planePt), dtype=float)).dot(n)
+    f = np.asarray(c['normalForce']) + np.asarray(c['shearForce'])
+    sign = np.where((d1 < 0) & (d2 >= 0), 1.0, np.where((d2 < 0) & (d1 >= 0), -1.0, 0.0))
+    return Vector3(*[float(x) for x in (f * sign[:, None]).sum(axis=0)])
+
+
+def forcesOnCoordPlane(coord, axis):
+    """forcesOnPlane for the plane normal to axis 0, 1 or 2 at coordinate coord."""
+    pt, n = Vector3.Zero, Vector3.Zero
+    pt[axis], n[axis] = coord, 1
+    return forcesOnPlane(pt, n)
+
+
+def _loveSums():
+    """Per contact: the force on the second body f (normal + shear) and the branch vector
+    l = x2 - x1 between the bodies' positions."""
+    np = _np()
+    c = _contacts()
+    pos = _bodyPos()
+    f = np.asarray(c['normalForce']) + np.asarray(c['shearForce'])
+    l = pos[c['id2']] - pos[c['id1']]
+    return c, f, l
+
+
+def getStress(volume=0):
+    """Average stress in the volume (Love-Weber): σ = -1/V Σ_c f ⊗ l over the real contacts (f: the
+    contact force on the second body, l: the branch vector from the first body's position to the
+    second's), tension positive; volume 0: the box around all spheres (aabbDim)."""
+    np = _np()
+    if volume == 0:
+        d = aabbDim()
+        volume = d[0] * d[1] * d[2]
+    if not volume > 0:
+        raise ValueError('getStress: volume must be positive, got %r' % volume)
+    c, f, l = _loveSums()
+    return _matrix(-np.einsum('ci,cj->ij', f, l) / volume)
+
+
+def bodyStressTensors():
+    """Stress of each body (one Matrix3 per body id): -1/V_b Σ_c f ⊗ (x_c - x_b), over its real
+    contacts, f the contact force on the body, x_c the contact point, V_b its volume (spheres; the
+    tensors of bodies with no volume are zero)."""
+    np = _np()
+    n = len(O.bodies)
+    c = _contacts()
+    pos = _bodyPos()
+    out = np.zeros((n, 3, 3))
+    f = np.asarray(c['normalForce']) + np.asarray(c['shearForce'])
+    cp = np.asarray(c['contactPoint'])
+    for ids, sign in ((c['id1'], -1.0), (c['id2'], 1.0)):
+        np.add.at(out, ids, np.einsum('ci,cj->cij', sign * f, cp - pos[ids]))
+    r = np.nan_to_num(np.asarray(O.bodies.arrays().radius), nan=0.0)
+    vol = 4. / 3. * math.pi * r ** 3
+    with np.errstate(divide='ignore', invalid='ignore'):
+        out = np.where(vol[:, None, None] > 0, -out / vol[:, None, None], 0.0)
+    return [_matrix(m) for m in out]
+
+
+def normalShearStressTensors(compressionPositive=False, splitNormalTensor=False, thresholdForce=float('nan')):
+    """The normal and shear parts of the stress of a periodic cell; this engine has no periodic
+    cell, so it raises RuntimeError as the reference does in an aperiodic simulation."""
+    raise RuntimeError("Can't compute stress of periodic cell in aperiodic simulation.")
+
+
+def fabricTensor(cutoff=0.0, splitTensor=False, thresholdForce=float('nan')):
+    """Fabric tensor F = 1/N Σ_c n ⊗ n over the N real contacts (n: contact normal); returned as a
+    1-tuple (F,). splitTensor: (F_strong, F_weak) of the contacts whose normal force is above and
+    below thresholdForce (NaN: the mean normal force), both divided by the total N. cutoff is
+    accepted for compatibility; contacts of all bodies are counted."""
+    np = _np()
+    c = _contacts()
+    nrm = np.asarray(c['normal'])
+    N = len(nrm)
+    if N == 0:
+        raise RuntimeError('fabricTensor: there are no real contacts')
+    nn = np.einsum('ci,cj->cij', nrm, nrm)
+    if not splitTensor:
+        return (_matrix(nn.sum(axis=0) / N),)
+    fn = np.linalg.norm(np.asarray(c['normalForce']), axis=1)
+    t = fn.mean() if math.isnan(thresholdForce) else thresholdForce
+    strong = fn > t
+    return (_matrix(nn[strong].sum(axis=0) / N), _matrix(nn[~strong].sum(axis=0) / N))
+
+
+def momentum():
+    """Total linear momentum Σ m v of the bodies."""
+    np = _np()
+    a = O.bodies.arrays()
+    ok = np.asarray(a.exists, dtype=bool)
+    return Vector3(*[float(x) for x in (np.asarray(a.mass)[ok, None] * np.asarray(a.vel)[ok]).sum(axis=0)])
+
+
+def angularMomentum(origin=Vector3.Zero):
+    """Total angular momentum about `origin`: Σ (x - origin) × m v + R I Rᵀ ω (I: principal inertia
+    in the body frame, R: its orientation)."""
+    L = Vector3.Zero
+    o = Vector3(origin)
+    for b in O.bodies:
+        s = b.state
+        R = s.ori.toRotationMatrix()
+        I = Matrix3(s.inertia[0], 0, 0, 0, s.inertia[1], 0, 0, 0, s.inertia[2])
+        L += (s.pos - o).cross(s.mass * s.vel) + (R * I * R.transpose()) * s.angVel
+    return L
+
+
+def maxOverlapRatio():
+    """Largest overlap of two spheres in contact relative to the smaller radius: max δ/min(r1, r2)."""
+    np = _np()
+    c = _contacts()
+    r = np.asarray(O.bodies.arrays().radius)
+    if len(c['id1']) == 0:
+        return 0.0
+    rmin = np.fmin(r[c['id1']], r[c['id2']])
+    both = ~np.isnan(r[c['id1']]) & ~np.isnan(r[c['id2']])
+    if not both.any():
+        return 0.0
+    return float((np.asarray(c['penetrationDepth'])[both] / rmin[both]).max())
+
+
+def numIntrsOfEachBody():
+    """Number of real interactions of each body, indexed by id."""
+    np = _np()
+    c = _contacts()
+    counts = np.bincount(np.concatenate([c['id1'], c['id2']]).astype(int), minlength=len(O.bodies))
+    return [int(x) for x in counts]
+
+
+def intrsOfEachBody():
+    """The real interactions of each body, indexed by id."""
+    return [O.interactions.withBody(i) if O.bodies[i] is not None else [] for i in range(len(O.bodies))]
+
+
+def getBodyIdsContacts(bodyID=0):
+    """Ids of the bodies that body bodyID has an interaction with (real or potential)."""
+    ret = []
+    for i in O.interactions.withBodyAll(bodyID):
+        ret.append(i.id2 if i.id1 == bodyID else i.id1)
+    return ret
+
+
+def psd(bins=5, mass=True, mask=-1):
+    """Particle size distribution of the spheres: (diameters, cumulative fraction, cumulative sum)
+    over `bins` equal intervals between the smallest and the largest diameter; the sum is of masses
+    (mass=True) or of numbers of spheres."""
+    np = _np()
+    from ._yade import _sphereColumns
+    ids, pos, r, mat = _sphereColumns(mask)
+    if len(ids) == 0:
+        raise RuntimeError('psd: there are no spheres')
+    d = 2 * np.asarray(r)
+    w = np.asarray(O.bodies.arrays().mass)[ids] if mass else np.ones(len(d))
+    edges = np.linspace(d.min(), d.max(), bins + 1)
+    hist, _ = np.histogram(d, bins=edges, weights=w)
+    cum = np.concatenate([[0.], np.cumsum(hist)])
+    return edges, cum / cum[-1], cum
+
+
+def setRefSe3():
+    """Set every body's reference position and orientation (State.refPos, refOri) to the current ones."""
+    for b in O.bodies:
+        b.state.refPos = b.state.pos
+        b.state.refOri = b.state.ori
+
+
+def shiftBodies(ids, shift):
+    """Move bodies `ids` by `shift`; returns 1."""
+    shift = Vector3(shift)
+    for i in ids:
+        O.bodies[i].state.pos += shift
+    return 1
+
+
+def calm(mask=-1):
+    """Zero the velocity and angular velocity of the bodies whose mask shares a bit with `mask` (-1: all)."""
+    for b in O.bodies:
+        if mask == -1 or (b.mask & mask):
+            b.state.vel = Vector3.Zero
+            b.state.angVel = Vector3.Zero
+
+
+def randomizeColors(onlyDynamic=False):
+    """Give every body's shape (only dynamic bodies with onlyDynamic) a random color."""
+    for b in O.bodies:
+        if b.shape is not None and (b.dynamic or not onlyDynamic):
+            b.shape.color = randomColor()
+
+
+def highlightNone():
+    """Turn Shape.highlight off for all bodies."""
+    for b in O.bodies:
+        if b.shape is not None:
+            b.shape.highlight = False
+
+
+def _setWire(wire, spheresToo=True):
+    for b in O.bodies:
+        if b.shape is not None and (spheresToo or not isinstance(b.shape, Sphere)):
+            b.shape.wire = wire
+
+
+def wireAll():
+    """Draw all shapes as wireframes."""
+    _setWire(True)
+
+
+def wireNone():
+    """Draw all shapes filled."""
+    _setWire(False)
+
+
+def wireNoSpheres():
+    """Draw all shapes as wireframes, spheres filled."""
+    _setWire(True, spheresToo=False)
+    for b in O.bodies:
+        if isinstance(b.shape, Sphere):
+            b.shape.wire = False
+
+
+def _setComponents(vec, value, axes):
+    v = Vector3(vec)
+    for a in axes:
+        if a not in 'xyz':
+            raise ValueError("axes must be letters of 'xyz', got %r" % axes)
+        v['xyz'.index(a)] = value['xyz'.index(a)]
+    return v
+
+
+def setBodyPosition(id, pos, axis='xyz'):
+    """Set the position of body `id` along the given axes."""
+    O.bodies[id].state.pos = _setComponents(O.bodies[id].state.pos, Vector3(pos), axis)
+
+
+def setBodyVelocity(id, vel, axis='xyz'):
+    """Set the velocity of body `id` along the given axes."""
+    O.bodies[id].state.vel = _setComponents(O.bodies[id].state.vel, Vector3(vel), axis)
+
+
+def setBodyAngularVelocity(id, angVel):
+    """Set the angular velocity of body `id`."""
+    O.bodies[id].state.angVel = Vector3(angVel)
+
+
+def setBodyOrientation(id, ori):
+    """Set the orientation (Quaternion) of body `id`."""
+    O.bodies[id].state.ori = Quaternion(ori)
+
+
+def setBodyColor(id, color):
+    """Set the color of body `id`'s shape."""
+    O.bodies[id].shape.color = Vector3(color)
+
+
+def runningInBatch():
+    """Whether the script runs in a batch (yade-batch sets PARAM_TABLE)."""
+    import os
+    return 'PARAM_TABLE' in os.environ
+
+
+def replaceCollider(colliderEngine):
+    """Put `colliderEngine` in O.engines in place of the current collider."""
+    from ._yade import Collider
+    engines = list(O.engines)
+    for i, e in enumerate(engines):
+        if isinstance(e, Collider):
+            engines[i] = colliderEngine
+            O.engines = engines
+            return
+    raise RuntimeError('replaceCollider: no collider in O.engines')
+
 
 from .params import readParamsFromTable, waitIfBatch  # noqa: E402
 __all__ += ['readParamsFromTable', 'waitIfBatch']

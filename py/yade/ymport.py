@@ -1,0 +1,148 @@
+"""Reading bodies from files (as in Yade's yade.ymport): spheres from text files (text, textExt),
+facets from text files (textFacets) and from STL surfaces (stl, ASCII or binary). Each function
+returns a list of bodies to give to O.bodies.append()."""
+import struct
+
+from ._yade import Vector3
+from . import utils
+
+__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl']
+
+
+class ImportFormatError(ValueError):
+    """A file or format that cannot be read."""
+
+
+def _rows(filename):
+    """(line number, list of fields) of the lines of a text file that are neither empty nor comments
+    (starting with #); also the format named by a '#format <name>' line, if any."""
+    rows, fileFormat = [], None
+    with open(filename) as f:
+        for n, line in enumerate(f, 1):
+            fields = line.split()
+            if not fields:
+                continue
+            if fields[0].startswith('#'):
+                if fields[0] == '#format' and len(fields) > 1:
+                    fileFormat = fields[1]
+                continue
+            rows.append((n, fields))
+    return rows, fileFormat
+
+
+def _numbers(filename, n, fields, count, what):
+    if len(fields) < count:
+        raise ImportFormatError('%s:%d: %s needs %d columns, the line has %d' % (filename, n, what, count, len(fields)))
+    try:
+        return [float(x) for x in fields[:count]]
+    except ValueError as e:
+        raise ImportFormatError('%s:%d: %s' % (filename, n, e))
+
+
+_sphereFormats = ('x_y_z_r', 'x_y_z_r_matId', 'x_y_z_r_attrs')
+
+
+def textExt(filename, format='x_y_z_r', shift=Vector3.Zero, scale=1.0, attrs=[], **kw):
+    """Spheres from a text file written by export.textExt: columns x y z r, then (format
+    'x_y_z_r_matId') the index of the material in O.materials, or ('x_y_z_r_attrs') more columns,
+    appended to the list `attrs` as strings, one list per sphere. Each sphere is
+    utils.sphere(shift + scale·(x, y, z), scale·r, **kw). Lines starting with # are skipped."""
+    if format not in _sphereFormats:
+        raise ImportFormatError('ymport.textExt: unknown format %r; use one of %s' % (format, ', '.join(_sphereFormats)))
+    shift = Vector3(shift)
+    rows, _ = _rows(filename)
+    ret = []
+    for n, fields in rows:
+        x, y, z, r = _numbers(filename, n, fields, 4, 'a sphere')
+        kwi = dict(kw)
+        if format == 'x_y_z_r_matId':
+            if len(fields) < 5:
+                raise ImportFormatError('%s:%d: format x_y_z_r_matId needs 5 columns, the line has %d' % (filename, n, len(fields)))
+            kwi['material'] = int(fields[4])
+        elif format == 'x_y_z_r_attrs':
+            attrs.append(fields[4:])
+        ret.append(utils.sphere(shift + scale * Vector3(x, y, z), scale * r, **kwi))
+    return ret
+
+
+def text(filename, shift=Vector3.Zero, scale=1.0, **kw):
+    """Spheres from a text file of lines 'x y z r' (textExt with format 'x_y_z_r')."""
+    return textExt(filename, format='x_y_z_r', shift=shift, scale=scale, **kw)
+
+
+def textClumps(filename, shift=Vector3.Zero, discretization=0, orientation=[], scale=1.0, **kw):
+    """Clumps from a text file: not possible, this engine has no Clump class yet."""
+    raise NotImplementedError('ymport.textClumps: this engine has no Clump class yet, so clumps cannot be made')
+
+
+_facetFormats = ('x1_y1_z1_x2_y2_z2_x3_y3_z3', 'x1_y1_z1_x2_y2_z2_x3_y3_z3_matId', 'id_x1_y1_z1_x2_y2_z2_x3_y3_z3_matId',
+                 'x1_y1_z1_x2_y2_z2_x3_y3_z3_attrs')
+
+
+def textFacets(filename, format='x1_y1_z1_x2_y2_z2_x3_y3_z3', shift=Vector3.Zero, scale=1.0, attrs=[], **kw):
+    """Facets from a text file, one triangle per line: the 9 coordinates of its vertices, with
+    (formats ..._matId) the index of the material in O.materials last, (id_..._matId) an id first
+    (ignored), or (..._attrs) more columns, appended to `attrs` as strings. Each facet is
+    utils.facet([shift + scale·vertex, ...], **kw). Lines starting with # are skipped."""
+    if format not in _facetFormats:
+        raise ImportFormatError('ymport.textFacets: unknown format %r; use one of %s' % (format, ', '.join(_facetFormats)))
+    shift = Vector3(shift)
+    rows, _ = _rows(filename)
+    ret = []
+    for n, fields in rows:
+        kwi = dict(kw)
+        if format.startswith('id_'):
+            fields = fields[1:]
+        c = _numbers(filename, n, fields, 9, 'a facet')
+        if format.endswith('_matId'):
+            if len(fields) < 10:
+                raise ImportFormatError('%s:%d: format %s needs the material index after the 9 coordinates' % (filename, n, format))
+            kwi['material'] = int(fields[9])
+        elif format.endswith('_attrs'):
+            attrs.append(fields[9:])
+        ret.append(utils.facet([shift + scale * Vector3(c[3 * i], c[3 * i + 1], c[3 * i + 2]) for i in range(3)], **kwi))
+    return ret
+
+
+def _stlTriangles(filename):
+    """The triangles (3 tuples of 3 floats) of an ASCII or binary STL file."""
+    with open(filename, 'rb') as f:
+        data = f.read()
+    if len(data) >= 84:
+        count = struct.unpack_from('<I', data, 80)[0]
+        if len(data) == 84 + 50 * count:  # a binary file: 80-byte header, count, 50 bytes per triangle
+            tris = []
+            for i in range(count):
+                v = struct.unpack_from('<12f', data, 84 + 50 * i)
+                tris.append((v[3:6], v[6:9], v[9:12]))
+            return tris
+    words = data.decode('ascii', errors='replace').split()
+    if not words or words[0].lower() != 'solid':
+        raise ImportFormatError('%s: neither an ASCII STL file (starting with "solid") nor a binary one (80-byte header, '
+                                'triangle count, 50 bytes per triangle)' % filename)
+    verts = []
+    for i, w in enumerate(words):
+        if w.lower() == 'vertex':
+            try:
+                verts.append(tuple(float(x) for x in words[i + 1:i + 4]))
+            except ValueError as e:
+                raise ImportFormatError('%s: bad vertex: %s' % (filename, e))
+    if len(verts) % 3:
+        raise ImportFormatError('%s: %d vertices, not a whole number of triangles' % (filename, len(verts)))
+    return [tuple(verts[i:i + 3]) for i in range(0, len(verts), 3)]
+
+
+def stl(file, dynamic=None, fixed=True, wire=True, color=None, highlight=False, noBound=False, material=-1, scale=1.0,
+        shift=Vector3.Zero):
+    """Facets of the triangles of an STL surface (ASCII or binary): utils.facet of
+    shift + scale·vertex for each triangle, with the given display, mask and material options.
+    Degenerate triangles (zero area) are skipped."""
+    shift = Vector3(shift)
+    ret = []
+    for tri in _stlTriangles(file):
+        vs = [shift + scale * Vector3(v) for v in tri]
+        if (vs[1] - vs[0]).cross(vs[2] - vs[0]).norm() == 0:
+            continue
+        ret.append(utils.facet(vs, dynamic=dynamic, fixed=fixed, wire=wire, color=color, highlight=highlight, noBound=noBound,
+                               material=material))
+    return ret
