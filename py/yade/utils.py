@@ -322,7 +322,7 @@ def getStress(volume=0):
 
 
 def bodyStressTensors():
-    """Stress of each body (one Matrix3 per body id): -1/V_b Σ_c f ⊗ (x_c - x_b), over its real
+    """Stress of each body (one Matrix3 per body id): 1/V_b Σ_c f ⊗ (x_c - x_b), over its real
     contacts, f the contact force on the body, x_c the contact point, V_b its volume (spheres; the
     tensors of bodies with no volume are zero)."""
     np = _np()
@@ -337,7 +337,7 @@ def bodyStressTensors():
     r = np.nan_to_num(np.asarray(O.bodies.arrays().radius), nan=0.0)
     vol = 4. / 3. * math.pi * r ** 3
     with np.errstate(divide='ignore', invalid='ignore'):
-        out = np.where(vol[:, None, None] > 0, -out / vol[:, None, None], 0.0)
+        out = np.where(vol[:, None, None] > 0, out / vol[:, None, None], 0.0)
     return [_matrix(m) for m in out]
 
 
@@ -376,30 +376,30 @@ def momentum():
 
 
 def angularMomentum(origin=Vector3.Zero):
-    """Total angular momentum about `origin`: Σ (x - origin) × m v + R I Rᵀ ω (I: principal inertia
-    in the body frame, R: its orientation)."""
-    L = Vector3.Zero
-    o = Vector3(origin)
-    for b in O.bodies:
-        s = b.state
-        R = s.ori.toRotationMatrix()
-        I = Matrix3(s.inertia[0], 0, 0, 0, s.inertia[1], 0, 0, 0, s.inertia[2])
-        L += (s.pos - o).cross(s.mass * s.vel) + (R * I * R.transpose()) * s.angVel
-    return L
+    """Angular momentum of the bodies' motion about `origin`: Σ (x - origin) × m v (the orbital part,
+    as the reference computes it; the spin I·ω of the bodies about their own centers is not added)."""
+    np = _np()
+    a = O.bodies.arrays()
+    ok = np.asarray(a.exists, dtype=bool)
+    r = np.asarray(a.pos)[ok] - np.asarray(tuple(origin), dtype=float)
+    L = np.cross(r, np.asarray(a.mass)[ok, None] * np.asarray(a.vel)[ok]).sum(axis=0)
+    return Vector3(*[float(x) for x in L])
 
 
 def maxOverlapRatio():
-    """Largest overlap of two spheres in contact relative to the smaller radius: max δ/min(r1, r2)."""
+    """Largest overlap of two spheres in contact relative to their harmonic mean radius:
+    max δ/r*, r* = 2 r1 r2/(r1 + r2) (0 without sphere-sphere contacts)."""
     np = _np()
     c = _contacts()
     r = np.asarray(O.bodies.arrays().radius)
     if len(c['id1']) == 0:
         return 0.0
-    rmin = np.fmin(r[c['id1']], r[c['id2']])
-    both = ~np.isnan(r[c['id1']]) & ~np.isnan(r[c['id2']])
+    r1, r2 = r[c['id1']], r[c['id2']]
+    both = ~np.isnan(r1) & ~np.isnan(r2)
     if not both.any():
         return 0.0
-    return float((np.asarray(c['penetrationDepth'])[both] / rmin[both]).max())
+    rHarmonic = 2 * r1[both] * r2[both] / (r1[both] + r2[both])
+    return float((np.asarray(c['penetrationDepth'])[both] / rHarmonic).max())
 
 
 def numIntrsOfEachBody():

@@ -1,0 +1,163 @@
+"""yade.utils functions of the manual and the reference's yade.utils, against the reference's numbers
+on the same scene.
+
+The reference figures were printed by Yade 2023.02a running the scene below followed by the same
+calls: `yade-double -n -x probe.py` (scene: SCENE, then print(utils.<function>(...)))."""
+import math
+
+import pytest
+
+from yade import O, utils, Vector3, Matrix3
+
+pytestmark = pytest.mark.usefixtures("fresh_scene")
+
+SCENE = """
+from yade import utils
+O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb(), Bo1_Box_Aabb()]),
+    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
+        [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+    NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.2)]
+rs = [0.5, 0.45, 0.55, 0.5, 0.48, 0.52, 0.5, 0.47]
+k = 0
+for i in range(2):
+    for j in range(2):
+        for l in range(2):
+            O.bodies.append(utils.sphere((i * 0.9 + 0.03 * l, j * 0.95, 0.5 + l * 0.9), rs[k])); k += 1
+O.bodies.append(utils.wall(0.02, axis=2))
+O.bodies.append(utils.facet([(-1, -1, 0.05), (3, -1, 0.05), (-1, 3, 0.05)]))
+O.bodies.append(utils.box((2.3, 0.5, 0.5), (0.4, 0.4, 0.4), fixed=True))
+O.bodies[0].state.vel = (0.1, -0.2, 0.3)
+O.bodies[1].state.angVel = (1, 2, 3)
+O.dt = 1e-4
+O.run(3, True)
+"""
+
+
+@pytest.fixture
+def scene():
+    import yade
+    ns = dict(vars(yade))
+    exec(SCENE, ns)
+    assert O.interactions.countReal() == 19  # (reference: 19)
+
+
+def close(a, b, rel=1e-9, abs_=1e-6):
+    a, b = list(a), list(b)
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        assert x == pytest.approx(y, rel=rel, abs=abs_), (a, b)
+
+
+def test_aabb_and_volumes(scene):
+    close(utils.aabbDim(), (2.000032607522708, 2.020020053193145, 1.9700066590773515))
+    close(utils.aabbDim(0.2, True), (0.7440291015702161, 0.7600738620676496, 0.7200317783000665))
+    assert utils.getSpheresMass() == pytest.approx(10754.969340443306, rel=1e-12)
+    assert utils.getSpheresVolume() == pytest.approx(4.136526669401271, rel=1e-12)
+    assert utils.porosity() == pytest.approx(0.48027288235059235, rel=1e-12)
+    # the mass is the density times the volume
+    assert utils.getSpheresMass() == pytest.approx(2600 * utils.getSpheresVolume(), rel=1e-12)
+
+
+def test_forces_and_torques(scene):
+    assert utils.sumForces([0, 1, 2, 8], (0, 0, 1)) == pytest.approx(183841.081468742, rel=1e-9)
+    assert utils.sumTorques([0, 1, 2], (0, 0, 1), (0.1, 0.2, 0.3)) == pytest.approx(462589.8916513153, rel=1e-9)
+    ref = (1854138.571758384351, 503.7992162926004767, 625133.0917667647591)
+    close(utils.forcesOnPlane((0.45, 0, 0), (1, 0, 0)), ref)
+    close(utils.forcesOnCoordPlane(0.45, 0), ref)
+    with pytest.raises(IndexError):
+        utils.sumForces([0, 99], (0, 0, 1))
+
+
+def test_stress_tensors(scene):
+    ref = [-209906.8077926127589, -7.035158536054715306, -7009.349525903930953, -51.65764083723838951, -103591.5098356469098,
+           22.1012060766459264, -43352.30242386100144, -150902.9608673144248, -334466.0616610993748]
+    s = utils.getStress()
+    close([s[i, j] for i in range(3) for j in range(3)], ref, abs_=1e-5)
+    s10 = utils.getStress(10.)
+    assert s10[0, 0] == pytest.approx(-167065.5771147866617, rel=1e-9)
+    assert s10[2, 1] == pytest.approx(-120104.204864741856, rel=1e-9)
+    with pytest.raises(ValueError):
+        utils.getStress(-1)
+    bst = utils.bodyStressTensors()
+    assert len(bst) == len(O.bodies)
+    ref0 = [-344499.4080250939587, -75.9402365112375719, -7357.020923828861669, 92.41914525915599654, -449985.521666311135,
+            77.36553162907945591, -7203.205826221221287, -105.5659872113341748, -606251.8008719056379]
+    close([bst[0][i, j] for i in range(3) for j in range(3)], ref0, abs_=1e-5)
+    assert bst[2][2, 2] == pytest.approx(-1324673.233316021506, rel=1e-9)
+    assert bst[8] == Matrix3.Zero  # the wall has no volume
+    # the reference refuses without a periodic cell
+    with pytest.raises(RuntimeError, match="periodic"):
+        utils.normalShearStressTensors()
+
+
+def test_fabric_tensor(scene):
+    F, = utils.fabricTensor()
+    ref = [0.2107598986669095287, 1.932207591325487245e-06, 0.007004133723329148374, 1.932207591325487245e-06, 0.1578947369118595123,
+           -3.222554709996796733e-07, 0.007004133723329148374, -3.222554709996796733e-07, 0.6313453644212309035]
+    close([F[i, j] for i in range(3) for j in range(3)], ref, abs_=1e-12)
+    assert F.trace() == pytest.approx(1.0)  # normals are unit vectors
+    strong, weak = utils.fabricTensor(splitTensor=True)
+    assert (strong + weak).trace() == pytest.approx(1.0)
+
+
+def test_momenta_and_overlaps(scene):
+    close(utils.momentum(), (88.11647352236869324, -272.2368498731293016, 905.4774094236934161))
+    close(utils.angularMomentum(), (477.2785812986295468, -79.49440542168753154, 0.06171400964378648268))
+    close(utils.angularMomentum((1, 2, 3)), (-2150.386787168145474, 561.6335834349001743, 448.5315109275102259))
+    assert utils.maxOverlapRatio() == pytest.approx(0.2863170438527423, rel=1e-12)
+    assert utils.kineticEnergy() == pytest.approx(765.2828371159965, rel=1e-12)
+    assert utils.unbalancedForce() == pytest.approx(1.893476036184602, rel=1e-9)
+    assert utils.avgNumInteractions() == pytest.approx(3.4545454545454546)
+
+
+def test_interactions_of_bodies(scene):
+    assert utils.numIntrsOfEachBody() == [5, 2, 5, 2, 5, 3, 5, 3, 4, 4, 0]
+    ref = [[(0, 1), (0, 2), (0, 4), (8, 0), (9, 0)], [(0, 1), (1, 5)], [(0, 2), (2, 3), (2, 6), (8, 2), (9, 2)], [(2, 3), (3, 7)],
+           [(0, 4), (4, 5), (4, 6), (8, 4), (9, 4)], [(1, 5), (4, 5), (5, 7)], [(2, 6), (4, 6), (6, 7), (8, 6), (9, 6)],
+           [(3, 7), (5, 7), (6, 7)], [(8, 0), (8, 2), (8, 4), (8, 6)], [(9, 0), (9, 2), (9, 4), (9, 6)], []]
+    assert [sorted((i.id1, i.id2) for i in l) for l in utils.intrsOfEachBody()] == ref
+    assert sorted(utils.getBodyIdsContacts(0)) == [1, 2, 3, 4, 5, 6, 7, 8, 9]  # potential pairs too
+
+
+def test_psd(scene):
+    sizes, proc, cum = utils.psd()
+    close(sizes, [0.9, 0.94, 0.98, 1.02, 1.06, 1.1])
+    close(proc, [0.0, 0.19741109827315415, 0.30940038864917574, 0.6891383795617925, 0.8315229113651023, 1.0])
+    close(cum, [0.0, 2123.150309391013, 3327.5916938431274, 7411.662143509858, 8943.00341760783, 10754.969340443304])
+    sizes, proc, cum = utils.psd(bins=3, mass=False)
+    close(sizes, [0.9, 0.96666667, 1.03333333, 1.1], rel=1e-7)
+    close(proc, [0, .375, .75, 1])
+    close(cum, [0, 3, 6, 8])
+
+
+def test_geometry_helpers():
+    close(utils.inscribedCircleCenter((0, 0, 0), (1, 0, 0), (0, 2, 0)), (0.381966011250105153, 0.381966011250105153, 0))
+    assert utils.ptInAABB((0.5, 0.5, 0.5), (0, 0, 0), (1, 1, 1)) and not utils.ptInAABB((1.5, 0.5, 0.5), (0, 0, 0), (1, 1, 1))
+
+
+def test_state_setters(scene):
+    utils.setRefSe3()
+    assert O.bodies[0].state.refPos == O.bodies[0].state.pos
+    close(O.bodies[0].state.refPos, (8.846419636222525921e-06, -7.845433004926015723e-05, 0.5000965283854937882))
+    utils.shiftBodies([2, 3], (1, 2, 3))
+    close(O.bodies[2].state.pos, (0.9999784968527011264, 2.950013873254512475, 3.500008423210977604))
+    utils.calm()
+    assert O.bodies[0].state.vel == Vector3.Zero and O.bodies[1].state.angVel == Vector3.Zero
+    utils.setBodyVelocity(0, (1, 2, 3), 'xz')
+    assert O.bodies[0].state.vel == Vector3(1, 0, 3)
+    with pytest.raises(ValueError):
+        utils.setBodyVelocity(0, (1, 2, 3), 'q')
+    utils.wireAll()
+    assert all(b.shape.wire for b in O.bodies)
+    utils.wireNoSpheres()
+    assert not O.bodies[0].shape.wire and O.bodies[9].shape.wire
+
+
+def test_no_contacts():
+    O.bodies.append(utils.sphere((0, 0, 0), 1))
+    assert utils.maxOverlapRatio() == 0.0
+    assert utils.numIntrsOfEachBody() == [0]
+    assert utils.getStress() == Matrix3.Zero
+    with pytest.raises(RuntimeError):
+        utils.fabricTensor()
