@@ -76,10 +76,27 @@ static std::string hexAddress(const void* p) {
     return os.str();
 }
 
+// A functor of the same class as an earlier one in the list replaces it (as in Yade:
+// LawDispatcher([Law2_X(), Law2_X()]) has one functor, the last one).
+static py::object withoutRepeatedClasses(py::handle list) {
+    if (!py::isinstance<py::list>(list) && !py::isinstance<py::tuple>(list)) return py::reinterpret_borrow<py::object>(list); // (setAttr says what is wrong)
+    py::list out;
+    for (py::handle f : list) {
+        bool replaced = false;
+        for (size_t i = 0; i < out.size() && !replaced; ++i)
+            if (!f.is_none() && out[i].get_type().is(f.get_type())) {
+                out[i] = f;
+                replaced = true;
+            }
+        if (!replaced) out.append(f);
+    }
+    return out;
+}
+
 template <class D> static void setFunctors(D& d, py::handle list, const char* what) {
     const AttrInfo* a = ClassRegistry::instance().get(typeid(D)).findAttr("functors");
     try {
-        setAttr(d, *a, list);
+        setAttr(d, *a, withoutRepeatedClasses(list));
     } catch (py::error_already_set&) {
         throw;
     } catch (py::type_error& e) {

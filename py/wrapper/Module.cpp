@@ -8,6 +8,7 @@
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
+#include <map>
 #include <lib/factory/ClassRegistry.hpp>
 #include <py/wrapper/ArraysWrapper.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
@@ -55,6 +56,18 @@ PYBIND11_MODULE(_yade, m) {
         for (const yade::ClassInfo* c : yade::ClassRegistry::instance().all()) names.push_back(c->name);
         return names;
     }, "Names of all registered classes, bases before derived classes (yade.wrapper, yade.system)");
+    m.def("_libVersions", [] {
+        std::map<std::string, std::string> v;
+#if defined(__clang__)
+        v["compiler"] = "clang " __clang_version__;
+#elif defined(__GNUC__)
+        v["compiler"] = "gcc " + std::to_string(__GNUC__) + "." + std::to_string(__GNUC_MINOR__) + "." + std::to_string(__GNUC_PATCHLEVEL__);
+#endif
+        v["eigen"] = std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION);
+        v["pybind11"] = std::to_string(PYBIND11_VERSION_MAJOR) + "." + std::to_string(PYBIND11_VERSION_MINOR) + "." + std::to_string(PYBIND11_VERSION_PATCH);
+        v["python"] = std::to_string(PY_MAJOR_VERSION) + "." + std::to_string(PY_MINOR_VERSION) + "." + std::to_string(PY_MICRO_VERSION);
+        return v;
+    }, "Versions of the libraries compiled in (yade.libVersions)");
     { // yade.config.sourceRoot: this file is <root>/py/wrapper/Module.cpp
         std::string root = __FILE__;
         for (int up = 0; up < 3 && root.find('/') != std::string::npos; ++up) root = root.substr(0, root.rfind('/'));

@@ -227,3 +227,9 @@ for _name in ('acos', 'acosh', 'asin', 'asinh', 'atan', 'atan2', 'atanh', 'ceil'
 tgamma = _m.gamma
 factorial = _m.factorial
 del _name
+
+# The precision levels (as Yade's yade.math.HP1...): one here, HP1, holding the same functions.
+import types as _types
+
+HP1 = _types.ModuleType('yade.math.HP1', 'The functions of Real at precision level 1 (double): the same as yade.math.')
+HP1.__dict__.update({_k: _v for _k, _v in dict(globals()).items() if not _k.startswith('_') and _k != 'HP1'})
