@@ -101,9 +101,13 @@ void Scene::moveToNextTimeStep() {
     }
     struct StepEnd { // (also when an engine throws)
         Scene& s;
-        ~StepEnd() { s.leaveStep(); }
+        ~StepEnd() {
+            s.subStep = -1;
+            s.leaveStep();
+        }
     } stepEnd{*this};
     beginStep();
+    subStep = 0; // (what O.subStep reads inside a whole step)
     const auto running = engines; // engines may be replaced from inside a step
     for (const auto& e : running) runEngine(*e);
     ++iter;

@@ -69,6 +69,9 @@ public:
 
     // The engine list, or the one assigned during the current step (in effect at its end).
     const std::vector<std::shared_ptr<Engine>>& getEngines() const { return hasNextEngines ? nextEngines : engines; }
+    // The list the current step runs, and the one assigned during it (empty if none), for O._currEngines / O._nextEngines.
+    const std::vector<std::shared_ptr<Engine>>& currentEngines() const { return engines; }
+    const std::vector<std::shared_ptr<Engine>>& pendingEngines() const { return nextEngines; }
     // Takes effect at once, or at the end of the current step if the loop is inside a step.
     void setEngines(const std::vector<std::shared_ptr<Engine>>& e);
     void setDt(Real value); // throws std::invalid_argument unless finite and positive

@@ -354,3 +354,45 @@ def test_scene_switching_names(y):
     O.resetAllScenes()
     assert O.thisScene == 1 and len(O.bodies) == 0
     O.switchScene()
+
+
+def test_subStep_inside_a_whole_step_and_engine_lists(y):
+    # (as the reference's regression test core.py TestLoop: O.subStep reads 0 inside a whole step)
+    O = y.O
+    seen = []
+    y.__dict__['_seen_substeps'] = seen
+    falling_sphere(y, [y.PyRunner(command='import yade; yade._seen_substeps.append(yade.O.subStep)', iterPeriod=1, initRun=True)])
+    O.step()
+    O.run(2, True)
+    assert seen == [0, 0, 0] and O.subStep == -1
+    # O.engines assigned inside a step: _nextEngines until the step ends, _currEngines after
+    O.engines = [y.PyRunner(command='import yade; yade.O.engines = [yade.ForceResetter()] * 3', iterPeriod=1, initRun=True),
+                 y.ForceResetter()]
+    O.subStepping = True
+    O.step()
+    O.step()
+    assert O.subStep == 1 and len(O.engines) == 3 and len(O._nextEngines) == 3 and len(O._currEngines) == 2
+    O.step()
+    O.step()
+    assert O.subStep == -1
+    O.step()
+    assert O.subStep == 0 and len(O._nextEngines) == 0 and len(O._currEngines) == 3
+    O.saveTmp(quiet=True)  # (accepted, as the reference's tests call it)
+    O.loadTmp(quiet=True)
+
+
+def test_memory_slots_as_file_names(y):
+    # reference: O.filename ':memory:x' after O.saveTmp('x') or O.loadTmp('x'), ':memory:' for the
+    # default slot; O.reload() then reloads the slot
+    O = y.O
+    falling_sphere(y)
+    O.saveTmp('x')
+    assert O.filename == ':memory:x'
+    O.step()
+    O.reload(quiet=True)
+    assert O.iter == 0 and O.filename == ':memory:x'
+    O.saveTmp()
+    assert O.filename == ':memory:'
+    O.step()
+    O.load(':memory:x')
+    assert O.iter == 0

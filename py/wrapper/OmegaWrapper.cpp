@@ -579,11 +579,11 @@ void bindOmega(py::module_& m) {
                 }
                 injectLabels(loaded->getEngines());
             }, "Replace the scene by one read from a saved file's content")
-            .def("saveTmp", [](OmegaProxy&, const std::string& slot) {
+            .def("saveTmp", [](OmegaProxy&, const std::string& slot, bool) {
                 py::gil_scoped_release nogil;
                 omega().tmpSlots[slot] = saveCurrentScene(false);
-            }, py::arg("mark") = "", "Save the scene in memory under a slot name")
-            .def("loadTmp", [](OmegaProxy&, const std::string& slot) {
+            }, py::arg("mark") = "", py::arg("quiet") = false, "Save the scene in memory under a slot name (quiet: accepted, nothing is printed anyway)")
+            .def("loadTmp", [](OmegaProxy&, const std::string& slot, bool) {
                 auto it = omega().tmpSlots.find(slot);
                 if (it == omega().tmpSlots.end())
                     throw std::runtime_error("Cannot load nonexistent memory-saved simulation :memory:" + slot + " (O.saveTmp first)");
@@ -594,7 +594,7 @@ void bindOmega(py::module_& m) {
                     omega().setScene(loaded);
                 }
                 injectLabels(loaded->getEngines());
-            }, py::arg("mark") = "", "Load the scene saved by O.saveTmp under that slot name")
+            }, py::arg("mark") = "", py::arg("quiet") = false, "Load the scene saved by O.saveTmp under that slot name")
             .def("labeledEngine", [](OmegaProxy&, const std::string& label) {
                 std::set<Serializable*> seen;
                 for (const auto& e : scene().getEngines())
@@ -611,6 +611,10 @@ void bindOmega(py::module_& m) {
                 e->scene = &s;
                 e->action();
             }, py::arg("engine"), "Run one engine once in the current scene; O.iter and O.time do not change")
+            .def_property_readonly("_currEngines", [](OmegaProxy&) { return scene().currentEngines(); },
+                    "The engines the current step runs (O.engines assigned during a step takes effect at its end)")
+            .def_property_readonly("_nextEngines", [](OmegaProxy&) { return scene().pendingEngines(); },
+                    "The engines assigned during the current step, run from the next one (empty if none)")
             .def_property_readonly("dynDtAvailable", [](OmegaProxy&) { return timeStepper() != nullptr; },
                     "Whether O.engines holds a time stepper, active or not")
             .def("resetThisScene", [](OmegaProxy&) { omega().reset(); }, release(), "Replace the current scene with an empty one (as O.reset())")

@@ -53,8 +53,12 @@ def save(self, fileName, quiet=False):
 
 def load(self, fileName, quiet=False):
     """Load a scene saved by O.save; the format and compression are detected from the content.
-    A missing, truncated or corrupt file raises and leaves the current scene as it was."""
+    A missing, truncated or corrupt file raises and leaves the current scene as it was.
+    ``:memory:<mark>`` names the scene saved by O.saveTmp(mark)."""
     fileName = os.fspath(fileName)
+    if fileName.startswith(_MEMORY):
+        loadTmp(self, fileName[len(_MEMORY):])
+        return
     with open(fileName, 'rb') as f:
         data = f.read()
     try:
@@ -71,6 +75,24 @@ def reload(self, quiet=False):
     load(self, _lastFile[0], quiet)
 
 
+_MEMORY = ':memory:'
+_saveTmp, _loadTmp = Omega.saveTmp, Omega.loadTmp
+
+
+def saveTmp(self, mark='', quiet=False):
+    """Save the scene in memory under a slot name (O.filename becomes ':memory:<mark>')."""
+    _saveTmp(self, mark)
+    _lastFile[0] = _MEMORY + mark
+
+
+def loadTmp(self, mark='', quiet=False):
+    """Load the scene saved by O.saveTmp(mark) (O.filename becomes ':memory:<mark>')."""
+    _loadTmp(self, mark)
+    _lastFile[0] = _MEMORY + mark
+
+
+Omega.saveTmp = saveTmp
+Omega.loadTmp = loadTmp
 Omega.save = save
 Omega.load = load
 Omega.reload = reload
