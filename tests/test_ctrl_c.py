@@ -136,3 +136,32 @@ def test_run_can_continue_after_interrupt(tmp_path):
     """)
     assert rc == 0, out + err
     assert "RESUMED 5 True" in out
+
+
+def test_sigint_stops_a_saved_simulation_run_by_the_launcher(tmp_path):
+    # ./yade -n -x sim.yade.gz runs the saved simulation until it stops: here, until Ctrl-C
+    maker = tmp_path / "make.py"
+    maker.write_text(textwrap.dedent("""
+        O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10))]
+        O.bodies.append(sphere((0, 0, 0), 1))
+        O.dt = 1e-4
+        O.save('sim.yade.gz')
+    """))
+    env = dict(os.environ, YADE_BUILD_DIR=str(BUILD))
+    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(maker)], capture_output=True, text=True,
+                       env=env, cwd=str(tmp_path), timeout=120)
+    assert r.returncode == 0, r.stderr
+    p = subprocess.Popen(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", "sim.yade.gz"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, env=env, cwd=str(tmp_path))
+    try:
+        assert "Running simulation sim.yade.gz" in p.stdout.readline()
+        time.sleep(1.0)
+        sent = time.time()
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=30)
+        assert time.time() - sent < 5
+        assert p.returncode == 1 and "KeyboardInterrupt" in err
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.communicate()
