@@ -55,6 +55,11 @@ def test_math_modules():
     assert ymath.round(2.5) == 3.0 and ymath.rint(2.5) == 2.0 and ymath.sgn(-2.) == -1
     with pytest.raises(ValueError):
         ymath.getDigits10(2)
+    # abs() of a vector, matrix or quaternion is its norm, as the reference's (3.7416573867739413, 1.7320508075688772)
+    from yade import Matrix3, Quaternion
+    assert abs(Vector3(-1, 2, -3)) == pytest.approx(3.7416573867739413, rel=1e-15)
+    assert abs(Matrix3(-1, 0, 0, 0, 1, 0, 0, 0, 1)) == pytest.approx(1.7320508075688772, rel=1e-15)
+    assert abs(Quaternion.Identity) == 1.0
     ns = {}
     exec('import math\nfrom yade import *', ns)
     assert ns['math'].pi == 3.141592653589793  # `from yade import *` does not hide Python's math

@@ -281,6 +281,7 @@ namespace {
 		        .def("abs", [](const T& a) -> T { return a.cwiseAbs(); });
 		if constexpr (isFloat) {
 			cls.def("norm", [](const T& a) -> S { return a.norm(); })
+			        .def("__abs__", [](const T& a) -> S { return a.norm(); }) // abs(v): the norm, as minieigen
 			        .def("isApprox",
 			             [](const T& a, const T& b, S prec) { return a.isApprox(b, prec); },
 			             py::arg("other"),
@@ -407,6 +408,7 @@ namespace {
 		// q[0..3] = x, y, z, w (minieigen's order, i.e. Eigen's storage order)
 		cls.def("__len__", [](const Q&) { return 4; })
 		        .def("__getitem__", [](const Q& q, py::ssize_t i) { return q.coeffs()[normIndex(i, 4, "Quaternion")]; })
+		        .def("__abs__", [](const Q& q) { return q.norm(); })
 		        .def("__setitem__", [](Q& q, py::ssize_t i, Real x) { noteExternalWrite(); q.coeffs()[normIndex(i, 4, "Quaternion")] = x; });
 
 		cls.def("__mul__", [](const Q& a, const Q& b) -> Q { return a * b; }, py::is_operator())
