@@ -8,7 +8,7 @@ from ._yade import *  # noqa: F401,F403  (O, classes, math types)
 from ._yade import O, setNumThreads  # noqa: F401
 
 from . import config, wrapper, system, _customConverters  # noqa: E402,F401  (module layout of Yade)
-from . import math, minieigenHP  # noqa: E402,F401
+from . import math, minieigenHP, libVersions  # noqa: E402,F401
 version = config.version
 
 from . import _persistence  # noqa: E402,F401  (O.save, O.load, O.reload)

@@ -53,3 +53,32 @@ def printAllVersions(rstFormat=False):
         for k in libs:
             print('%-13s cmake: %-21s C++: %s' % (k, cmake[k][1] if cmake.get(k) else '', cpp[k][1] if cpp.get(k) else ''))
     print('Python         : ', sys.version.split()[0], ', little endian:', sys.byteorder == 'little')
+
+
+def getAllVersions():
+    """{library: [(major, minor, patch), 'version']}: the compiled-in versions, completed by those found at run time."""
+    ret = getAllVersionsCmake()
+    ret.update(getAllVersionsCpp())
+    return ret
+
+
+def getVersion(libName):
+    """(major, minor, patch) of library libName, (0, 0, 0) if unknown."""
+    v = getAllVersions().get(libName)
+    return v[0] if v else (0, 0, 0)
+
+
+def getArchitecture():
+    """The machine's architecture with Debian's names (amd64, arm64, i386, ppc64el, s390x...)."""
+    m = platform.machine()
+    return {'x86_64': 'amd64', 'aarch64': 'arm64', 'i686': 'i386', 'i386': 'i386', 'ppc64le': 'ppc64el'}.get(m, m)
+
+
+def getLinuxVersion():
+    """The Linux distribution's name and version (from /etc/os-release), or the platform's description."""
+    try:
+        with open('/etc/os-release') as f:
+            info = dict(line.rstrip('\n').split('=', 1) for line in f if '=' in line)
+        return info.get('PRETTY_NAME', '').strip('"') or platform.platform()
+    except OSError:
+        return platform.platform()
