@@ -38,6 +38,9 @@ def test_system_child_classes():
     with pytest.warns(DeprecationWarning, match='FrictMat'):
         m = d['GranularMat'](young=5.)
     assert type(m) is FrictMat and m.young == 5.
+    ns = {}
+    exec('from yade import *', ns)  # the old names are at top level too, as in the reference's launcher
+    assert 'InteractionGeometry' in ns and 'GranularMat' in ns
 
 
 def test_config():

@@ -10,6 +10,8 @@ from ._yade import O, setNumThreads  # noqa: F401
 from . import config, wrapper, system, _customConverters  # noqa: E402,F401  (module layout of Yade)
 from . import math, minieigenHP, libVersions  # noqa: E402,F401
 version = config.version
+# old names of renamed classes (GranularMat, InteractionGeometry...): they warn and build the current class
+globals().update({_k: _v for _k, _v in system.cxxCtorsDict().items() if _k not in globals()})
 
 from . import _persistence  # noqa: E402,F401  (O.save, O.load, O.reload)
 from ._engines import *  # noqa: E402,F401,F403  (engine1 + engine2, CentralGravityEngine)
