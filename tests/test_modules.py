@@ -167,3 +167,21 @@ def test_export_ymport_round_trip(tmp_path):
     export.textExt(str(tmp_path / 'r.txt'), format='x_y_z_r_matId')
     bs = ymport.textExt(str(tmp_path / 'r.txt'), format='x_y_z_r_matId')
     assert [(b.state.pos, b.shape.radius) for b in bs] == [(b.state.pos, b.shape.radius) for b in O.bodies]
+
+
+def test_ymport_gmsh_as_the_reference(tmp_path):
+    import math
+    from yade import Quaternion
+    (tmp_path / 'm.mesh').write_text('MeshVersionFormatted 1\nDimension\n3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n'
+                                     'Triangles\n2\n1 2 3 0\n1 2 4 0\nEnd\n')
+    fs = ymport.gmsh(str(tmp_path / 'm.mesh'), shift=Vector3(1, 2, 3), scale=2, orientation=Quaternion((0, 0, 1), math.pi / 2))
+    # reference: [(1,2,3), (1,4,3), (-1,2,3)] and [(1,2,3), (1,4,3), (1,2,5)], fixed, wire
+    ref = [[(1, 2, 3), (1, 4, 3), (-1, 2, 3)], [(1, 2, 3), (1, 4, 3), (1, 2, 5)]]
+    assert len(fs) == 2
+    for f, r in zip(fs, ref):
+        assert not f.dynamic and f.shape.wire
+        for v, rv in zip(f.shape.vertices, r):
+            assert (f.state.pos + f.state.ori * v - Vector3(rv)).norm() < 1e-14
+    (tmp_path / 'bad.mesh').write_text('Vertices\n2\n0 0 0 0\n')
+    with pytest.raises(ValueError, match='bad.mesh'):
+        ymport.gmsh(str(tmp_path / 'bad.mesh'))

@@ -3,10 +3,10 @@ facets from text files (textFacets) and from STL surfaces (stl, ASCII or binary)
 returns a list of bodies to give to O.bodies.append()."""
 import struct
 
-from ._yade import Vector3
+from ._yade import Quaternion, Vector3
 from . import utils
 
-__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl']
+__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh']
 
 
 class ImportFormatError(ValueError):
@@ -146,3 +146,36 @@ def stl(file, dynamic=None, fixed=True, wire=True, color=None, highlight=False, 
         ret.append(utils.facet(vs, dynamic=dynamic, fixed=fixed, wire=wire, color=color, highlight=highlight, noBound=noBound,
                                material=material))
     return ret
+
+
+def gmsh(meshfile='file.mesh', shift=Vector3.Zero, scale=1.0, orientation=Quaternion.Identity, **kw):
+    """Facets of the triangles of a mesh in the MEDIT text format (.mesh, as GMSH writes it): the
+    'Vertices' section (count, then 'x y z ref' lines) and the 'Triangles' section (count, then
+    'i j k ref' lines, 1-based vertex numbers); each vertex becomes shift + orientation·(scale·v).
+    Extra keywords go to utils.facet."""
+    with open(meshfile) as f:
+        words = f.read().split()
+    shift, q = Vector3(shift), Quaternion(orientation)
+
+    def section(name, width):
+        if name not in words:
+            raise ImportFormatError('%s: no %s section (not a MEDIT .mesh file?)' % (meshfile, name))
+        i = words.index(name)
+        try:
+            n = int(words[i + 1])
+            rows = [words[i + 2 + width * k:i + 2 + width * (k + 1)] for k in range(n)]
+            if n and len(rows[-1]) < width:
+                raise IndexError
+            return rows
+        except (ValueError, IndexError):
+            raise ImportFormatError('%s: the %s section is cut short or not numbers' % (meshfile, name))
+
+    try:
+        vertices = [shift + q * (scale * Vector3(*[float(x) for x in row[:3]])) for row in section('Vertices', 4)]
+        triangles = [[int(x) - 1 for x in row[:3]] for row in section('Triangles', 4)]
+    except ValueError as e:
+        raise ImportFormatError('%s: %s' % (meshfile, e))
+    for t in triangles:
+        if min(t) < 0 or max(t) >= len(vertices):
+            raise ImportFormatError('%s: a triangle refers to vertex %d, there are %d' % (meshfile, max(t) + 1, len(vertices)))
+    return [utils.facet([vertices[i] for i in t], **kw) for t in triangles]
