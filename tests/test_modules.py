@@ -185,3 +185,50 @@ def test_ymport_gmsh_as_the_reference(tmp_path):
     (tmp_path / 'bad.mesh').write_text('Vertices\n2\n0 0 0 0\n')
     with pytest.raises(ValueError, match='bad.mesh'):
         ymport.gmsh(str(tmp_path / 'bad.mesh'))
+
+
+HEADER = 'FoamFile\n{\n    version 2.0; // a comment\n    format ascii;\n}\n/* a block\n comment */\n'
+
+
+def test_ymport_openfoam_block_mesh_dict(tmp_path):
+    # a unit cube in mm: two facets per quadrilateral of the boundary (v0 v1 v2, v2 v3 v0), as the reference
+    (tmp_path / 'blockMeshDict').write_text(HEADER + """
+convertToMeters 0.001;
+vertices ( (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1) );
+blocks ( hex (0 1 2 3 4 5 6 7) (2 2 2) simpleGrading (1 1 1) );
+boundary
+(
+    bottom { type wall; faces ( (0 3 2 1) ); }
+    sides { type patch; faces ( (0 1 5 4) (1 2 6 5) (2 3 7 6) (3 0 4 7) ); }
+    top { type empty; faces ( (4 5 6 7) ); }
+    other { type symmetry; faces ( (4 5 6 7) ); }
+);
+""")
+    fs = ymport.blockMeshDict(str(tmp_path / 'blockMeshDict'))
+    assert len(fs) == 12
+    first = [fs[0].state.pos + fs[0].state.ori * v for v in fs[0].shape.vertices]
+    for v, ref in zip(first, [(0, 0, 0), (0, 0.001, 0), (0.001, 0.001, 0)]):
+        assert (v - Vector3(ref)).norm() < 1e-15
+    assert len(ymport.blockMeshDict(str(tmp_path / 'blockMeshDict'), patchasWall=False)) == 4
+    assert len(ymport.blockMeshDict(str(tmp_path / 'blockMeshDict'), patchasWall=False, emptyasWall=False)) == 2
+
+
+def test_ymport_openfoam_poly_mesh(tmp_path):
+    # the boundary faces of a polyMesh: n facets around the center of each n-gon (320 for the
+    # reference's own test mesh of 80 quadrilaterals, as there)
+    d = tmp_path / 'polyMesh'
+    d.mkdir()
+    (d / 'points').write_text(HEADER + '8\n(\n(0 0 0)\n(1 0 0)\n(1 1 0)\n(0 1 0)\n(0 0 1)\n(1 0 1)\n(1 1 1)\n(0 1 1)\n)\n')
+    (d / 'faces').write_text(HEADER + '6\n(\n4(0 3 2 1)\n4(0 1 5 4)\n4(1 2 6 5)\n4(2 3 7 6)\n4(3 0 4 7)\n4(4 5 6 7)\n)\n')
+    (d / 'boundary').write_text(HEADER + """2
+(
+    walls { type wall; inGroups List<word> 1(wall); nFaces 5; startFace 0; }
+    lid { type patch; nFaces 1; startFace 5; }
+)
+""")
+    fs = ymport.polyMesh(str(d))
+    assert len(fs) == 24
+    assert len(ymport.polyMesh(str(d), patchasWall=False)) == 20
+    corners = [fs[0].state.pos + fs[0].state.ori * v for v in fs[0].shape.vertices]
+    for v, ref in zip(corners, [(0, 0, 0), (0, 1, 0), (0.5, 0.5, 0)]):
+        assert (v - Vector3(ref)).norm() < 1e-15

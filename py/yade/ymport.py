@@ -6,7 +6,7 @@ import struct
 from ._yade import Quaternion, Vector3
 from . import utils
 
-__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh']
+__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh', 'blockMeshDict', 'polyMesh']
 
 
 class ImportFormatError(ValueError):
@@ -179,3 +179,137 @@ def gmsh(meshfile='file.mesh', shift=Vector3.Zero, scale=1.0, orientation=Quater
         if min(t) < 0 or max(t) >= len(vertices):
             raise ImportFormatError('%s: a triangle refers to vertex %d, there are %d' % (meshfile, max(t) + 1, len(vertices)))
     return [utils.facet([vertices[i] for i in t], **kw) for t in triangles]
+
+
+# OpenFOAM dictionaries: comments removed, then tokens, with '(' ')' '{' '}' ';' as tokens of their own.
+def _foamTokens(path):
+    import re
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r'/\*.*?\*/', ' ', text, flags=re.S)
+    text = re.sub(r'//[^\n]*', ' ', text)
+    return re.findall(r'[(){};]|[^\s(){};]+', text)
+
+
+def _foamList(tokens, i, path):
+    """The nested list starting at tokens[i] == '(' (an optional count before it is skipped), and the
+    index after its ')'; numbers are floats, a 'N(' prefix (faces of polyMesh) is dropped."""
+    if tokens[i] != '(':
+        raise ImportFormatError('%s: expected "(" at token %d, got %r' % (path, i, tokens[i]))
+    out, i = [], i + 1
+    while i < len(tokens) and tokens[i] != ')':
+        if tokens[i] == '(':
+            item, i = _foamList(tokens, i, path)
+            out.append(item)
+        else:
+            t = tokens[i]
+            if i + 1 < len(tokens) and tokens[i + 1] == '(' and t.isdigit():
+                i += 1  # (the number of items of the list that follows)
+                continue
+            try:
+                out.append(float(t))
+            except ValueError:
+                out.append(t)
+            i += 1
+    if i >= len(tokens):
+        raise ImportFormatError('%s: a list is not closed' % path)
+    return out, i + 1
+
+
+def _foamEntry(tokens, key, path):
+    """The list after `key` (skipping a count), at the top level of the file."""
+    for i, t in enumerate(tokens):
+        if t == key:
+            j = i + 1
+            while j < len(tokens) and tokens[j] != '(':
+                j += 1
+            if j < len(tokens):
+                return _foamList(tokens, j, path)[0]
+    raise ImportFormatError('%s: no "%s" entry' % (path, key))
+
+
+def _wantedPatch(kind, patchasWall, emptyasWall):
+    return kind == 'wall' or (kind == 'patch' and patchasWall) or (kind == 'empty' and emptyasWall)
+
+
+def blockMeshDict(path, patchasWall=True, emptyasWall=True, **kw):
+    """Facets of the boundary faces of an OpenFOAM blockMeshDict (its 'vertices', scaled by
+    'convertToMeters' or 'scale', and the faces of its 'boundary' patches): two facets per
+    quadrilateral (v0 v1 v2, v2 v3 v0). Patches of type wall always, 'patch' ones if patchasWall,
+    'empty' ones if emptyasWall. Extra keywords go to utils.facet."""
+    tokens = _foamTokens(path)
+    factor = 1.0
+    for key in ('convertToMeters', 'scale'):
+        if key in tokens:
+            factor = float(tokens[tokens.index(key) + 1])
+    vertices = [factor * Vector3(*v) for v in _foamEntry(tokens, 'vertices', path)]
+    ret = []
+    i = tokens.index('boundary') if 'boundary' in tokens else -1
+    if i < 0:
+        raise ImportFormatError('%s: no "boundary" entry' % path)
+    if tokens[i + 1] != '(':
+        raise ImportFormatError('%s: "boundary" is not followed by a list' % path)
+    # boundary ( name { type X; faces ( (a b c d) ... ); } ... ): walk the tokens of each patch
+    j = i + 2
+    while j < len(tokens) and tokens[j] != ')':
+        name = tokens[j]
+        if tokens[j + 1] != '{':
+            raise ImportFormatError('%s: patch %r has no {...} block' % (path, name))
+        k, kind, faces = j + 2, None, []
+        while tokens[k] != '}':
+            if tokens[k] == 'type':
+                kind = tokens[k + 1]
+            if tokens[k] == 'faces':
+                faces, k = _foamList(tokens, k + 1, path)
+                continue
+            k += 1
+        if _wantedPatch(kind, patchasWall, emptyasWall):
+            for f in faces:
+                v = [vertices[int(x)] for x in f]
+                for t in range(1, len(v) - 1):  # (v0 v1 v2), (v2 v3 v0) for a quadrilateral
+                    ret.append(utils.facet((v[0], v[t], v[t + 1]) if t == 1 else (v[t], v[t + 1], v[0]), **kw))
+        j = k + 1
+    return ret
+
+
+def polyMesh(path, patchasWall=True, emptyasWall=True, **kw):
+    """Facets of the boundary faces of an OpenFOAM polyMesh directory (files points, faces and
+    boundary): each face of n vertices becomes n facets around its center. Patches of type wall
+    always, 'patch' ones if patchasWall, 'empty' ones if emptyasWall. Extra keywords go to utils.facet."""
+    import os
+    pt = _foamTokens(os.path.join(path, 'points'))
+    ft = _foamTokens(os.path.join(path, 'faces'))
+    bt = _foamTokens(os.path.join(path, 'boundary'))
+
+    def body(tokens, what):
+        """The main list of a polyMesh file: the first '(' after the FoamFile header's '}'."""
+        start = tokens.index('}') + 1 if 'FoamFile' in tokens else 0
+        j = start
+        while j < len(tokens) and tokens[j] != '(':
+            j += 1
+        if j >= len(tokens):
+            raise ImportFormatError('%s: no list in the %s file' % (path, what))
+        return _foamList(tokens, j, path)[0]
+
+    points = [Vector3(*p) for p in body(pt, 'points')]
+    faces = body(ft, 'faces')
+    ret = []
+    bl = body(bt, 'boundary')
+    # bl is [name, '{', 'type', kind, ';', ..., 'nFaces', n, ';', 'startFace', s, ';', '}', ...]
+    k = 0
+    while k < len(bl):
+        if bl[k] == '{':
+            end = bl.index('}', k)
+            block = bl[k + 1:end]
+            info = {block[m]: block[m + 1] for m in range(len(block) - 1) if isinstance(block[m], str) and block[m] in ('type', 'nFaces', 'startFace')}
+            if _wantedPatch(info.get('type'), patchasWall, emptyasWall):
+                start, n = int(info['startFace']), int(info['nFaces'])
+                for f in faces[start:start + n]:
+                    v = [points[int(x)] for x in f]
+                    c = sum(v, Vector3.Zero) / len(v)
+                    for t in range(len(v)):
+                        ret.append(utils.facet((v[t], v[(t + 1) % len(v)], c), **kw))
+            k = end + 1
+        else:
+            k += 1
+    return ret
