@@ -42,7 +42,7 @@ def _numbers(filename, n, fields, count, what):
 _sphereFormats = ('x_y_z_r', 'x_y_z_r_matId', 'x_y_z_r_attrs')
 
 
-def textExt(filename, format='x_y_z_r', shift=Vector3.Zero, scale=1.0, attrs=[], **kw):
+def textExt(filename, format='x_y_z_r', shift=Vector3.Zero, scale=1.0, attrs=None, **kw):
     """Spheres from a text file written by export.textExt: columns x y z r, then (format
     'x_y_z_r_matId') the index of the material in O.materials, or ('x_y_z_r_attrs') more columns,
     appended to the list `attrs` as strings, one list per sphere. Each sphere is
@@ -59,7 +59,7 @@ def textExt(filename, format='x_y_z_r', shift=Vector3.Zero, scale=1.0, attrs=[],
             if len(fields) < 5:
                 raise ImportFormatError('%s:%d: format x_y_z_r_matId needs 5 columns, the line has %d' % (filename, n, len(fields)))
             kwi['material'] = int(fields[4])
-        elif format == 'x_y_z_r_attrs':
+        elif format == 'x_y_z_r_attrs' and attrs is not None:
             attrs.append(fields[4:])
         ret.append(utils.sphere(shift + scale * Vector3(x, y, z), scale * r, **kwi))
     return ret
@@ -79,7 +79,7 @@ _facetFormats = ('x1_y1_z1_x2_y2_z2_x3_y3_z3', 'x1_y1_z1_x2_y2_z2_x3_y3_z3_matId
                  'x1_y1_z1_x2_y2_z2_x3_y3_z3_attrs')
 
 
-def textFacets(filename, format='x1_y1_z1_x2_y2_z2_x3_y3_z3', shift=Vector3.Zero, scale=1.0, attrs=[], **kw):
+def textFacets(filename, format='x1_y1_z1_x2_y2_z2_x3_y3_z3', shift=Vector3.Zero, scale=1.0, attrs=None, **kw):
     """Facets from a text file, one triangle per line: the 9 coordinates of its vertices, with
     (formats ..._matId) the index of the material in O.materials last, (id_..._matId) an id first
     (ignored), or (..._attrs) more columns, appended to `attrs` as strings. Each facet is
@@ -98,7 +98,7 @@ def textFacets(filename, format='x1_y1_z1_x2_y2_z2_x3_y3_z3', shift=Vector3.Zero
             if len(fields) < 10:
                 raise ImportFormatError('%s:%d: format %s needs the material index after the 9 coordinates' % (filename, n, format))
             kwi['material'] = int(fields[9])
-        elif format.endswith('_attrs'):
+        elif format.endswith('_attrs') and attrs is not None:
             attrs.append(fields[9:])
         ret.append(utils.facet([shift + scale * Vector3(c[3 * i], c[3 * i + 1], c[3 * i + 2]) for i in range(3)], **kwi))
     return ret
