@@ -25,6 +25,8 @@ _deprecated = {
     'InteractionPhysicsFunctor': 'IPhysFunctor',
     'InteractionGeometryDispatcher': 'IGeomDispatcher',
     'InteractionPhysicsDispatcher': 'IPhysDispatcher',
+    'MomentEngine': 'TorqueEngine',
+    'SpiralEngine': 'HelixEngine',
 }
 
 _proxiedClasses = set()
