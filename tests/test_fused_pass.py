@@ -11,7 +11,7 @@ from yade import O, pack, geom
 from yade.utils import *  # noqa: F401,F403
 
 
-def run(fused, steps, neverErase=False, energy=False, frictionAngle=.5):
+def run(fused, steps, neverErase=False, energy=False, frictionAngle=.5, mindlin=False):
     O.reset()
     O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=frictionAngle, density=2600))
     O.bodies.append(geom.facetBox((.05, .05, .1), (.05, .05, .1), wallMask=31))
@@ -21,8 +21,11 @@ def run(fused, steps, neverErase=False, energy=False, frictionAngle=.5):
     for b in O.bodies:
         if isinstance(b.shape, Sphere):
             b.state.angVel = (b.id % 7 - 3, b.id % 5 - 2, b.id % 3 - 1)  # spins: rolling and twisting contacts
-    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
-                           [Law2_ScGeom_FrictPhys_CundallStrack(neverErase=neverErase)])
+    if mindlin:
+        ip2, law = Ip2_FrictMat_FrictMat_MindlinPhys(en=.5), Law2_ScGeom_MindlinPhys_Mindlin(neverErase=neverErase)
+    else:
+        ip2, law = Ip2_FrictMat_FrictMat_FrictPhys(), Law2_ScGeom_FrictPhys_CundallStrack(neverErase=neverErase)
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [ip2], [law])
     assert loop.fusedPasses is True
     loop.fusedPasses = fused
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
@@ -67,3 +70,17 @@ def test_fused_pass_gives_the_same_bits_as_the_two_functors(neverErase, energy):
 def test_fused_pass_is_used_for_frictionless_contacts_too():
     assert run(True, 500, frictionAngle=0)[0] == run(False, 500, frictionAngle=0)[0]
 
+
+
+@pytest.mark.parametrize("neverErase", [False, True], ids=["plain", "neverErase"])
+def test_fused_hertz_mindlin_pass_gives_the_same_bits_as_the_two_functors(neverErase):
+    """Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_MindlinPhys_Mindlin: the functors' own code in one
+    loop (with loads ahead), so the same bits."""
+    fused = run(True, 1500, neverErase, mindlin=True)
+    general = run(False, 1500, neverErase, mindlin=True)
+    state, contacts, ended, sliding, _ = fused
+    assert len(contacts) > 300, len(contacts)
+    assert neverErase or ended > 20, "too few contacts ended: %d" % ended
+    assert sliding > 0, "no sliding contact"
+    assert fused[0] == general[0]
+    assert fused[1] == general[1]

@@ -25,7 +25,7 @@ import yade
 from yade import (O, Body, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
                   Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InsertionSortCollider,
                   InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack,
-                  NewtonIntegrator, PyRunner, Quaternion, Serializable, Sphere, State, Vector3, Vector3i, setNumThreads)
+                  NewtonIntegrator, PyRunner, Quaternion, Serializable, Sphere, State, Vector2, Vector3, Vector3i, setNumThreads)
 from yade import geom, pack
 from yade.utils import PWaveTimeStep, sphere, wall
 
@@ -178,6 +178,8 @@ class Filler:
         if isinstance(val, float):
             return [self.real(), 0.5, 1.5]
         if isinstance(val, str):
+            if name == 'algo':  # MatchMaker: one of its names
+                return ['harmAvg']
             if name == 'label':
                 label = 'rt%d_label' % k
                 return [label]
@@ -185,6 +187,9 @@ class Filler:
         if isinstance(val, Vector3):
             a = self.real()
             return [Vector3(a, a + 0.0011, a + 0.0023)]
+        if isinstance(val, Vector2):
+            a = self.real()
+            return [Vector2(a, a + 0.0013)]
         if isinstance(val, Vector3i):
             return [Vector3i(k, k + 1, k + 2)]
         if isinstance(val, Quaternion):
@@ -192,6 +197,8 @@ class Filler:
         if isinstance(val, list) and name == 'vertices':  # a facet: a non-degenerate triangle
             a = self.real()
             return [[Vector3(a, 0, 0), Vector3(0, a + .1, 0), Vector3(0, 0, a + .2)]]
+        if isinstance(val, list) and name == 'matches':  # MatchMaker: (id1, id2, value) triples
+            return [[Vector3(k, k + 1, .25), Vector3(0, k, .5)]]
         if isinstance(val, list) and name != 'functors':  # a list of ints (PartialEngine.ids)
             return [[k, k + 1, k + 5]]
         return []
@@ -200,7 +207,7 @@ class Filler:
         cls = type(obj).__name__
         for name, val in obj.dict().items():
             val = copied(val)  # math values are views of the attribute: keep the old value
-            if val is None or isinstance(val, Serializable) or name == 'functors':
+            if val is None or isinstance(val, Serializable) or name in ('functors', 'comb'):  # (lists of objects)
                 continue
             for cand in self.candidates(name, val):
                 try:
@@ -227,7 +234,7 @@ class Filler:
 def copied(v):
     if isinstance(v, list):
         return [copied(x) for x in v]
-    if isinstance(v, (Vector3, Vector3i, Quaternion)):
+    if isinstance(v, (Vector2, Vector3, Vector3i, Quaternion)):
         return type(v)(v)
     return v
 
@@ -306,6 +313,9 @@ def build_zoo():
     def dispatcher(cls):
         d = f.make(cls)
         d.functors = [f.make(c) for c in subclasses_of(functorKinds[cls], classes)]
+        for fn in d.functors:  # per-material-pair values (None by default)
+            if hasattr(fn, 'frictAngle'):
+                fn.frictAngle = f.make(yade.MatchMaker)
         return d
 
     zoo = []

@@ -30,7 +30,7 @@ public:
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
-        v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack): the same results, less bookkeeping");
+        v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack or Law2_ScGeom_MindlinPhys_Mindlin): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
     }
     void action() override;
@@ -49,9 +49,6 @@ private:
         Vector3r point, normal; // the facet's centre (its inscribed circle's), unit normal (global)
         Vector3r edge[3];       // the in-plane outward normals of its edges (global)
         Real icr;               // the radius of its inscribed circle
-        bool operator==(const FacetPlane& o) const {
-            return point == o.point && normal == o.normal && edge[0] == o.edge[0] && edge[1] == o.edge[1] && edge[2] == o.edge[2] && icr == o.icr;
-        }
     };
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
@@ -70,12 +67,18 @@ private:
         long long changes = -1, writes = -1, scene = -1; // bodies.changes, externalWrites(), Scene::serial
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
+    // Per facet (as facetPlanes): its orientation and the largest distance of its vertices from its
+    // position, to bound how far any point of it moved since the skin's epoch began.
+    std::vector<Quaternionr> facetOri;
+    std::vector<Real> facetReach;
+    Real facetDisplacement2() const; // the square of that bound, the largest over the facets
     Real sphereSphereReach = -1, facetSphereReach = -1; // the functors' factors (negative: unused)
     void prepareShapes();      // refreshes shapeCache when bodies or anything from Python changed
     bool prepareQuickReject(); // sets shapePos and shapeRadius; false if no functor makes the promise
     // True when the Ig2 functor would certainly return false for this potential pair; gap is
     // then how far the pair is beyond the functor's reach (distance of the centres, or a lower
     // bound of the distance of the sphere's centre from the facet's triangle, minus the reach).
+    static constexpr size_t pairLookahead = 8; // pairs ahead whose reads processBatch starts early
     bool quickReject(Body::id_t id1, Body::id_t id2, Real& gap) const {
         const Real ra = shapeRadius[id1], rb = shapeRadius[id2];
         if (ra > 0 && rb > 0) { // the very test of Ig2_Sphere_Sphere_ScGeom, in the same arithmetic
@@ -106,6 +109,7 @@ private:
         std::vector<std::vector<unsigned>> near;
         std::vector<Real> nearLimit;             // (-Inf: none yet in this epoch)
         std::vector<FacetPlane> facetPlanes; // facet planes at the start of the epoch
+        std::vector<Quaternionr> facetOri;    // and their orientations
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
         Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
         long long pairsBuild = -1;           // threadPairsBuild when the epoch began

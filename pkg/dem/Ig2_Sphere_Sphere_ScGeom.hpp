@@ -6,6 +6,8 @@
 
 namespace yade {
 
+class Law2_ScGeom_MindlinPhys_Mindlin;
+
 class Ig2_Sphere_Sphere_ScGeom : public IGeomFunctorBatched<Ig2_Sphere_Sphere_ScGeom, Sphere, Sphere, ScGeom> {
 public:
     static constexpr const char* classDoc = "Ig2 functor: exact contact of two spheres (3.3.1), overlap, normal and contact point, then the shear update (3.3.2).";
@@ -25,6 +27,9 @@ public:
     bool fusesWith(const LawFunctor& law) const override;
     void goBatchWithLaw(const BodyColumns& b, Contact* c, size_t n, LawFunctor& law, char* keep) override;
     Real quickRejectFactor() const override { return interactionDetectionFactor; }
+
+private:
+    void goBatchWithMindlin(const BodyColumns& b, Contact* c, size_t n, Law2_ScGeom_MindlinPhys_Mindlin& law, char* keep);
 };
 
 } // namespace yade

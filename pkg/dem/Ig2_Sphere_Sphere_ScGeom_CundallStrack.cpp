@@ -10,6 +10,7 @@
 #include <core/Scene.hpp>
 #include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
 #include <pkg/dem/Law2_ScGeom_FrictPhys_CundallStrack.hpp>
+#include <pkg/dem/Law2_ScGeom_MindlinPhys_Mindlin.hpp>
 #include <typeinfo>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -17,7 +18,9 @@
 
 namespace yade {
 
-bool Ig2_Sphere_Sphere_ScGeom::fusesWith(const LawFunctor& law) const { return typeid(law) == typeid(Law2_ScGeom_FrictPhys_CundallStrack); }
+bool Ig2_Sphere_Sphere_ScGeom::fusesWith(const LawFunctor& law) const {
+    return typeid(law) == typeid(Law2_ScGeom_FrictPhys_CundallStrack) || typeid(law) == typeid(Law2_ScGeom_MindlinPhys_Mindlin);
+}
 
 namespace {
 #ifdef __SSE2__
@@ -82,6 +85,10 @@ inline void store(Vector3r& a, Vector3r& b, Two x, Two y, Two z) {
 } // namespace
 
 void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, size_t n, LawFunctor& law, char* keep) {
+    if (typeid(law) == typeid(Law2_ScGeom_MindlinPhys_Mindlin)) {
+        goBatchWithMindlin(b, c, n, static_cast<Law2_ScGeom_MindlinPhys_Mindlin&>(law), keep);
+        return;
+    }
     const auto& cundallStrack = static_cast<const Law2_ScGeom_FrictPhys_CundallStrack&>(law);
     if (scene->trackEnergy) { // (the law's energy terms: the two batches, one after the other)
         goBatch(b, c, n, keep);
@@ -205,6 +212,38 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
         }
     }
     if (force && n) forces.markAdded();
+}
+
+// With Law2_ScGeom_MindlinPhys_Mindlin: contact by contact, go() then the law's go() (the very
+// functions), with the records and bodies of the contacts a few places ahead loaded in advance:
+// bodies read from a file are in no spatial order, and each contact's reads then missed the caches.
+void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact* c, size_t n, Law2_ScGeom_MindlinPhys_Mindlin& law, char* keep) {
+    const BodyStore::Columns cols = b.store;
+    const Real* radius = b.radius;
+    Vector3r* const force = scene->forces.inPlaceForces();
+    Vector3r* const torque = scene->forces.inPlaceTorques();
+    for (size_t j = 0; j < n; ++j) {
+        if (j + lookahead < n) {
+            const Contact& x = c[j + lookahead];
+            prefetchLines(x.geom, 3);
+            prefetchLines(x.phys, 5);
+            for (const Body::id_t id : {x.id1, x.id2}) {
+                __builtin_prefetch(&cols.pos[id]);
+                __builtin_prefetch(&cols.vel[id]);
+                __builtin_prefetch(&cols.angVel[id]);
+                __builtin_prefetch(&cols.mass[id]);
+                __builtin_prefetch(&cols.blockedDOFsMask[id]);
+                __builtin_prefetch(&radius[id]);
+                if (force) {
+                    __builtin_prefetch(&force[id], 1);
+                    __builtin_prefetch(&torque[id], 1);
+                }
+            }
+        }
+        Contact& x = c[j];
+        go(radius[x.id1], radius[x.id2], cols.kinematics(x.id1), cols.kinematics(x.id2), Vector3r::Zero(), false, x);
+        keep[j] = law.go(static_cast<ScGeom&>(*x.geom), static_cast<MindlinPhys&>(*x.phys), x);
+    }
 }
 
 } // namespace yade

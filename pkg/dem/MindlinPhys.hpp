@@ -10,14 +10,19 @@ public:
     static constexpr const char* classDoc =
             "Hertz-Mindlin contact physics: normal force kno·u^(3/2) (kno = 4/3·E*·sqrt(R*)), shear stiffness kso·u^(1/2) "
             "(kso = 8·G*·sqrt(R*)), viscous damping ratios betan, betas; kn and ks hold the current tangent stiffnesses.";
+    // (what the law reads and writes every step first, in as few cache lines as can be: a contact's
+    // record is read from memory at every step)
     Real kno = 0, kso = 0;
-    Real kr = 0, ktw = 0, maxBendPl = 0;
     Real betan = 0, betas = 0;
-    Real adhesionForce = 0, initD = 0, radius = NaN;
     bool isAdhesive = false, isSliding = false, isBroken = false;
     Vector3r normalViscous = Vector3r::Zero(), shearViscous = Vector3r::Zero(), shearElastic = Vector3r::Zero();
-    Vector3r usElastic = Vector3r::Zero(), usTotal = Vector3r::Zero(), prevU = Vector3r::Zero();
+    Vector3r usElastic = Vector3r::Zero(), usTotal = Vector3r::Zero();
+    Real adhesionForce = 0;
+    // (only with includeMoment, or never written by the law)
+    Real kr = 0, ktw = 0, maxBendPl = 0;
     Vector3r momentBend = Vector3r::Zero(), momentTwist = Vector3r::Zero();
+    Real initD = 0, radius = NaN;
+    Vector3r prevU = Vector3r::Zero();
     Vector2r Fs = Vector2r::Zero();
     template <class V> void visit(V& v) {
         FrictPhys::visit(v);
