@@ -398,3 +398,19 @@ def test_memory_slots_as_file_names(y):
     O.step()
     O.load(':memory:x')
     assert O.iter == 0
+
+
+def test_dyndt_can_be_set_as_in_the_reference(fresh_scene):
+    # yade-double -n -x: O.dynDt = False without a time stepper is accepted, True raises; with one it
+    # switches the stepper's `active`
+    from yade import O, ForceResetter, NewtonIntegrator, GlobalStiffnessTimeStepper
+    O.engines = [ForceResetter(), NewtonIntegrator()]
+    O.dynDt = False
+    assert O.dynDt is False
+    with pytest.raises(RuntimeError, match='No TimeStepper found in O.engines'):
+        O.dynDt = True
+    O.engines = [ForceResetter(), GlobalStiffnessTimeStepper(), NewtonIntegrator()]
+    O.dynDt = True
+    assert O.dynDt is True and O.engines[1].active
+    O.dynDt = False
+    assert O.dynDt is False and not O.engines[1].active
