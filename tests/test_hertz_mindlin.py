@@ -210,3 +210,20 @@ def test_deprecated_attribute_warns_and_is_accepted():
         law = Law2_ScGeom_MindlinPhys_Mindlin(preventGranularRatcheting=False)
     assert law.nothing is False
     assert MindlinPhys().dict()['kno'] == 0
+
+
+def test_matchmaker_in_the_linear_law_too():
+    """Ip2_FrictMat_FrictMat_FrictPhys takes frictAngle, kn and ks per pair of materials, as the reference."""
+    from yade import Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack
+    m1, m2 = two_materials()
+    O.bodies.append([utils.sphere((0, 0, 0), 0.001, material=m1), utils.sphere((0.00299, 0, 0), 0.002, material=m2),
+                     utils.sphere((0, 0.00199, 0), 0.001, material=m1)])
+    ip2 = Ip2_FrictMat_FrictMat_FrictPhys(frictAngle=MatchMaker(matches=((m1, m2, 0.1),), algo='max'), kn=MatchMaker(matches=((m1, m1, 123.),)))
+    O.engines = engines(ip2, Law2_ScGeom_FrictPhys_CundallStrack())
+    O.dt = 1e-8
+    O.step()
+    p12, p13 = O.interactions[0, 1].phys, O.interactions[0, 2].phys
+    assert p12.tangensOfFrictionAngle == pytest.approx(math.tan(0.1), rel=1e-15)
+    assert p13.tangensOfFrictionAngle == pytest.approx(math.tan(0.3), rel=1e-15)  # same material: max(0.3, 0.3)
+    assert p13.kn == 123.
+    assert p12.kn == pytest.approx(2 * 1e9 * 0.001 * 0.5e9 * 0.002 / (1e9 * 0.001 + 0.5e9 * 0.002), rel=1e-14)  # the formula
