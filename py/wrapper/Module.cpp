@@ -36,7 +36,15 @@ PYBIND11_MODULE(_yade, m) {
     yade::PyRunner::setCommandRunner([](const std::string& command) {
         pybind11::gil_scoped_acquire gil;
         pybind11::object ns = pybind11::module_::import("__main__").attr("__dict__");
-        pybind11::exec(command, ns);
+        try {
+            // (Python's own exec: pybind11::exec puts a coding line first, so tracebacks said line 2)
+            pybind11::module_::import("builtins").attr("exec")(pybind11::str(command), ns);
+        } catch (pybind11::error_already_set& e) { // reported as the reference does (yade/_pyrunner.py)
+            pybind11::object replacement = pybind11::module_::import("yade._pyrunner").attr("wrapped")(command, e.value(), e.trace());
+            if (replacement.is_none()) throw;
+            PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(replacement.ptr())), replacement.ptr());
+            throw pybind11::error_already_set();
+        }
     });
     // Engine warnings become Python RuntimeWarnings (shown once per message by default).
     yade::setWarningSink([](const std::string& msg) {
