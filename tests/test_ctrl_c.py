@@ -67,6 +67,14 @@ def interrupt(tmp_path, body, delay=1.0):
             p.communicate()
 
 
+def check_interrupted(rc, took, out, err):
+    """The script exited with status 1 within 5 s, with KeyboardInterrupt, between two steps."""
+    assert rc == 1, out + err
+    assert took < 5
+    assert "KeyboardInterrupt" in err
+    check_stopped_between_steps(out)
+
+
 def check_stopped_between_steps(out):
     m = re.search(r"STOPPED iter=(\d+) calls=(\d+) offset=(-?\d+) running=(\w+) later=(\d+)", out)
     assert m, out
@@ -85,10 +93,7 @@ def test_sigint_stops_blocking_run(tmp_path):
             report()
             raise
     """)
-    assert rc == 1, out + err
-    assert took < 5
-    assert "KeyboardInterrupt" in err
-    check_stopped_between_steps(out)
+    check_interrupted(rc, took, out, err)
 
 
 def test_sigint_stops_wait(tmp_path):
@@ -101,10 +106,7 @@ def test_sigint_stops_wait(tmp_path):
             report()
             raise
     """)
-    assert rc == 1, out + err
-    assert took < 5
-    assert "KeyboardInterrupt" in err
-    check_stopped_between_steps(out)
+    check_interrupted(rc, took, out, err)
 
 
 def test_sigint_in_a_long_script_stops_the_background_run(tmp_path):
@@ -117,10 +119,7 @@ def test_sigint_in_a_long_script_stops_the_background_run(tmp_path):
         while True:
             time.sleep(0.01)
     """)
-    assert rc == 1, out + err
-    assert took < 5
-    assert "KeyboardInterrupt" in err
-    check_stopped_between_steps(out)
+    check_interrupted(rc, took, out, err)
 
 
 def test_run_can_continue_after_interrupt(tmp_path):
