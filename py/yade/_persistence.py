@@ -33,22 +33,67 @@ def _decompress(data):
 
 def save(self, fileName, quiet=False):
     """Save the scene: XML if the name contains 'xml', binary otherwise; compressed for .gz/.bz2.
-    The file is written to a temporary beside the target and renamed, so a failure leaves
-    nothing half-written."""
+    The file is written to a temporary beside the target, flushed to the disk and renamed, so a
+    failure (a full disk, a process killed half-way) leaves the previous file as it was; an error
+    is an OSError that names the file."""
     fileName = os.fspath(fileName)
     data = _compress(fileName, self._toBytes('xml' in os.path.basename(fileName)))
     directory = os.path.dirname(os.path.abspath(fileName))
-    fd, tmp = tempfile.mkstemp(prefix='.' + os.path.basename(fileName) + '.', dir=directory)
+    prefix = '.' + os.path.basename(fileName) + '.'
+    try:
+        _removeOrphans(directory, prefix)
+        fd, tmp = tempfile.mkstemp(prefix=prefix + '%d.' % os.getpid(), dir=directory)
+    except OSError as e:
+        raise OSError(e.errno, e.strerror, fileName) from None
     try:
         with os.fdopen(fd, 'wb') as f:
             f.write(data)
+            f.flush()
+            os.fsync(f.fileno())  # the content is on the disk before the name points to it
         os.chmod(tmp, 0o666 & ~_UMASK)  # mkstemp makes it private; give the usual permissions
         os.replace(tmp, fileName)
-    except BaseException:
+        _syncDirectory(directory)
+    except BaseException as e:
         if os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(e, OSError) and e.errno is not None and e.filename is None:
+            raise OSError(e.errno, e.strerror, fileName) from None  # (a write error names no file)
         raise
     _lastFile[0] = fileName
+
+
+def _syncDirectory(directory):
+    """Flush the directory entry of a renamed file to the disk (where the system allows it)."""
+    try:
+        fd = os.open(directory, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _removeOrphans(directory, prefix):
+    """Remove the temporaries of saves of this file by processes that no longer exist (killed
+    while saving: the previous file is intact, the temporary is garbage)."""
+    for name in os.listdir(directory):
+        if not name.startswith(prefix):
+            continue
+        pid = name[len(prefix):].split('.', 1)[0]
+        if not pid.isdigit() or int(pid) == os.getpid():
+            continue
+        try:
+            os.kill(int(pid), 0)
+        except ProcessLookupError:  # (PermissionError: it exists, under another user)
+            try:
+                os.unlink(os.path.join(directory, name))
+            except OSError:
+                pass
+        except OSError:
+            pass
 
 
 def load(self, fileName, quiet=False):
