@@ -65,8 +65,18 @@ void Omega::loop() {
         endedByRequest = !reachedEnd && stopRequested.load();
     } catch (...) {
         error = std::current_exception();
-        if (!quiet) std::fprintf(stderr, "Simulation stopped at iteration %lld by an exception; O.wait() re-raises it.\n", s.iter);
+        const std::string where = (s.failedEngine.empty() ? std::string() : "in " + s.failedEngine + " ") + "at iteration " + std::to_string(s.iter);
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            errorSource = where;
+        }
+        if (!quiet) std::fprintf(stderr, "Simulation stopped by an exception %s; O.wait() re-raises it.\n", where.c_str());
     }
+}
+
+std::string Omega::lastErrorSource() const {
+    std::lock_guard<std::mutex> lock(mutex);
+    return errorSource;
 }
 
 void Omega::run(long long nSteps, bool quietError) {
@@ -75,6 +85,10 @@ void Omega::run(long long nSteps, bool quietError) {
     Scene& s = scene();
     if (nSteps > 0) s.stopAtIter = s.iter + nSteps;
     error = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        errorSource.clear();
+    }
     quiet = quietError;
     stopRequested = false;
     if (!loopThread.joinable()) {

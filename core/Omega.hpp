@@ -45,6 +45,9 @@ public:
     std::map<std::string, std::string> tmpSlots;
     // Error that stopped the last background run and has not been rethrown by wait() yet.
     std::exception_ptr pendingError() const { return error; }
+    // Where the error that stopped the last background run arose: "in Class labeled 'label' at
+    // iteration N" (the engine, when one threw), kept until the next run; empty if none.
+    std::string lastErrorSource() const;
 
 private:
     std::shared_ptr<Scene> scenes[2];
@@ -53,7 +56,8 @@ private:
     std::thread::id loopThreadId;
     std::atomic<bool> running{false}, stopRequested{false}, quiet{false}, endedByRequest{false};
     std::exception_ptr error;
-    std::mutex mutex;
+    std::string errorSource; // (guarded by mutex)
+    mutable std::mutex mutex;
     std::condition_variable wake, stopped;
     bool startRequested = false, shutdown = false;
     void worker();

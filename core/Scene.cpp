@@ -69,11 +69,21 @@ void Scene::beginStep() {
     interactions.resizeBodies(bodies.size());
     if (trackEnergy) energy.resetInstantaneous();
     newContactBodies.clear();
+    failedEngine.clear();
 }
 
 void Scene::runEngine(Engine& e) {
     e.scene = this;
-    if (e.dead || !e.isActivated()) return;
+    try {
+        if (e.dead || !e.isActivated()) return;
+        runEngineAction(e);
+    } catch (...) {
+        failedEngine = e.getClassName() + (e.label.empty() ? std::string() : " labeled '" + e.label + "'");
+        throw;
+    }
+}
+
+void Scene::runEngineAction(Engine& e) {
     if (!timingEnabled) {
         e.action();
         return;

@@ -81,13 +81,17 @@ public:
     int appendMaterial(const std::shared_ptr<Material>& m);
     void setThreads(int n);
     int threads() const { return forces.threads(); }
+    // The engine whose action threw last, as "Class labeled 'label'" (empty if none has thrown):
+    // the loop names it when an error stops a run.
+    std::string failedEngine;
 
 private:
     std::vector<std::shared_ptr<Engine>> engines, nextEngines;
     bool hasNextEngines = false, inStep = false;
     std::mutex enginesMutex;
     void beginStep();
-    void runEngine(Engine& e);
+    void runEngine(Engine& e);       // (records failedEngine if it throws)
+    void runEngineAction(Engine& e); // (timed while timingEnabled)
     void leaveStep(); // inStep off; an O.engines assigned during the step takes effect
 };
 

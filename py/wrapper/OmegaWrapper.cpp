@@ -354,6 +354,19 @@ std::string saveCurrentScene(bool xml) {
     if (resume) o.run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
     return data;
 }
+// Raises the error that stopped the loop as Python sees it (C++ exceptions translated as usual),
+// with a note naming where it arose (the engine with its label, the iteration).
+[[noreturn]] void raiseNamingSource(std::exception_ptr failure, const std::string& source) {
+    py::cpp_function rethrow([failure]() { std::rethrow_exception(failure); });
+    try {
+        rethrow();
+    } catch (py::error_already_set& e) {
+        if (!source.empty() && py::hasattr(e.value(), "add_note")) // (Python 3.11)
+            e.value().attr("add_note")("The simulation stopped on this error " + source + ".");
+        throw;
+    }
+    throw std::logic_error("raiseNamingSource: no exception"); // (not reached)
+}
 // Blocks until the background run stops, with the GIL released, waking every 50 ms to let Python
 // handle signals: on Ctrl-C (KeyboardInterrupt, or whatever a signal handler raised) the run
 // stops at the end of its current step and the exception propagates.
@@ -375,8 +388,16 @@ void waitInterruptibly() {
             throw e;
         }
     }
-    py::gil_scoped_release nogil;
-    o.wait(); // rethrows what stopped the run
+    std::exception_ptr failure;
+    {
+        py::gil_scoped_release nogil;
+        try {
+            o.wait(); // rethrows what stopped the run
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    }
+    if (failure) raiseNamingSource(failure, o.lastErrorSource());
 }
 } // namespace
 
@@ -507,6 +528,8 @@ void bindOmega(py::module_& m) {
             .def_property("stopAtIter", [](OmegaProxy&) { return scene().stopAtIter; },
                     [](OmegaProxy&, long long v) { scene().stopAtIter = v; }, "The loop stops when O.iter reaches this value")
             .def_property_readonly("running", [](OmegaProxy&) { return omega().isRunning(); })
+            .def_property_readonly("_lastErrorSource", [](OmegaProxy&) { return omega().lastErrorSource(); },
+                    "Where the error that stopped the last run arose: \"in Class labeled 'label' at iteration N\" (empty if none)")
             .def_property("periodic", [](OmegaProxy&) { return scene().isPeriodic; },
                     [](OmegaProxy&, bool v) {
                         if (v) throw py::value_error("periodic cells are not supported yet");
