@@ -81,8 +81,33 @@ namespace {
 // Python index → id, with negative indices from the end.
 long normIndex(long i, size_t n) { return i < 0 ? i + (long)n : i; }
 
+// Held while Python adds or removes bodies or interactions: a loop running in the background is
+// stopped at the end of its step first (the GIL released meanwhile: a PyRunner may need it) and
+// started again afterwards, so that no engine sees the containers change under it. From inside
+// the loop (a PyRunner) the change happens at once, between two engines.
+class BetweenSteps {
+public:
+    BetweenSteps() {
+        Omega& o = omega();
+        if (o.inLoopThread() || !o.isRunning()) return;
+        py::gil_scoped_release nogil;
+        resume = o.interrupt();
+    }
+    ~BetweenSteps() {
+        if (!resume) return;
+        py::gil_scoped_release nogil;
+        omega().run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
+    }
+    BetweenSteps(const BetweenSteps&) = delete;
+    BetweenSteps& operator=(const BetweenSteps&) = delete;
+
+private:
+    bool resume = false;
+};
+
 struct BodyContainerProxy {
     py::object append(py::object arg) {
+        BetweenSteps between;
         Scene& s = scene();
         if (py::isinstance<Body>(arg)) return py::cast(s.appendBody(py::cast<std::shared_ptr<Body>>(arg)));
         if (!py::isinstance<py::sequence>(arg) || py::isinstance<py::str>(arg))
@@ -116,12 +141,14 @@ struct BodyContainerProxy {
     }
     py::list replace(py::object arg) { // (checked before anything is removed)
         const std::vector<std::shared_ptr<Body>> bodies = newBodies(arg, "O.bodies.replace");
-        clear();
+        BetweenSteps between;
+        clearBodies();
         py::list ids;
         for (const auto& b : bodies) ids.append(scene().appendBody(b));
         return ids;
     }
     long insertAtId(const std::shared_ptr<Body>& b, long id) {
+        BetweenSteps between;
         Scene& s = scene();
         if (!b) throw py::type_error("O.bodies.insertAtId: the body is None");
         if (id < 0 || id > std::numeric_limits<Body::id_t>::max()) throw py::index_error("O.bodies.insertAtId: invalid id " + std::to_string(id));
@@ -144,6 +171,7 @@ struct BodyContainerProxy {
         return py::iter(l);
     }
     bool erase(long id) {
+        BetweenSteps between;
         Scene& s = scene();
         if (id < 0 || id >= (long)s.bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
         if (!s.bodies.exists((Body::id_t)id)) return false; // already erased
@@ -151,6 +179,10 @@ struct BodyContainerProxy {
         return true;
     }
     void clear() {
+        BetweenSteps between;
+        clearBodies();
+    }
+    static void clearBodies() {
         Scene& s = scene();
         s.interactions.clear();
         for (const auto& b : s.bodies)
@@ -232,6 +264,7 @@ struct InteractionContainerProxy {
         return py::cast(intrs[(size_t)n]);
     }
     void erase(int a, int b) {
+        BetweenSteps between;
         if (!scene().interactions.erase(a, b)) throw py::index_error("No such interaction: ##" + std::to_string(a) + "+" + std::to_string(b));
     }
 };
@@ -436,7 +469,10 @@ void bindOmega(py::module_& m) {
             .def("nth", &InteractionContainerProxy::nth, py::arg("n"), "The n-th interaction of the container (in its own order, real or potential)")
             .def("countReal", [](InteractionContainerProxy&) { return scene().interactions.countReal(); })
             .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"))
-            .def("clear", [](InteractionContainerProxy&) { scene().interactions.clear(); });
+            .def("clear", [](InteractionContainerProxy&) {
+                BetweenSteps between;
+                scene().interactions.clear();
+            });
     py::class_<ForceContainerProxy>(m, "ForceContainer", "O.forces: forces and torques of the current step")
             .def("f", &ForceContainerProxy::f, py::arg("id"), py::arg("sync") = false, "Force on body #id")
             .def("t", &ForceContainerProxy::t, py::arg("id"), py::arg("sync") = false, "Torque on body #id")
