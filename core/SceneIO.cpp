@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 
@@ -27,6 +28,32 @@ long long parseInt(const std::string& s) {
     const Real x = parseReal(s);
     if (x != std::floor(x) || std::abs(x) > 9e15) throw FormatError("expected an integer, found '" + s.substr(0, 40) + "'");
     return (long long)x;
+}
+
+// A number read for an int attribute (or a component of one): integral and in the range of an int,
+// as the Python setters require (a cast of anything else would be undefined).
+int toInt(Real x, const std::string& where) {
+    if (!(x == std::floor(x) && x >= std::numeric_limits<int>::min() && x <= std::numeric_limits<int>::max()))
+        throw FormatError(where + ": expected a 32-bit integer, found " + fmt(x));
+    return (int)x;
+}
+
+bool sameValue(Real a, Real b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// The positive / nonNegative / finite flags of an attribute, applied to n numbers read from a file as
+// the Python setters apply them to assigned values. A value equal to the constructor's default (which
+// the object holds before it is read: e.g. the NaN radius of Sphere()) is accepted, as a missing one is;
+// items of lists (dflt null) have no default.
+void checkFlags(const AttrInfo& a, const Real* x, const Real* dflt, int n, const std::string& where) {
+    for (int i = 0; i < n; ++i) {
+        if (dflt && sameValue(x[i], dflt[i])) continue;
+        const bool fin = std::isfinite(x[i]);
+        const char* problem = nullptr;
+        if (a.has(Attr::positive) && !(fin && x[i] > 0)) problem = " must be positive and finite";
+        else if (a.has(Attr::nonNegative) && !(fin && x[i] >= 0)) problem = " must be non-negative and finite";
+        else if (a.has(Attr::finite) && !fin) problem = " must be finite";
+        if (problem) throw FormatError(where + problem + ", found " + fmt(x[i]));
+    }
 }
 
 // Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
@@ -147,11 +174,17 @@ private:
         const std::string where = className + "." + a.name;
         auto fill = [&](Real* dst, int n) {
             const auto x = numbers(v.text, n, where);
+            checkFlags(a, x.data(), dst, n, where);
             std::copy(x.begin(), x.end(), dst);
         };
         switch (a.kind) {
             case AttrKind::Bool: *static_cast<bool*>(p) = parseInt(v.text) != 0; break;
-            case AttrKind::Int: *static_cast<int*>(p) = (int)parseInt(v.text); break;
+            case AttrKind::Int: {
+                const Real x = toInt((Real)parseInt(v.text), where), dflt = *static_cast<int*>(p);
+                checkFlags(a, &x, &dflt, 1, where);
+                *static_cast<int*>(p) = (int)x;
+                break;
+            }
             case AttrKind::Long: {
                 size_t used = 0;
                 long long x = 0;
@@ -165,36 +198,45 @@ private:
                 *static_cast<long long*>(p) = x;
                 break;
             }
-            case AttrKind::Real: *static_cast<Real*>(p) = parseReal(v.text); break;
+            case AttrKind::Real: fill(static_cast<Real*>(p), 1); break;
             case AttrKind::String: *static_cast<std::string*>(p) = v.text; break;
             case AttrKind::Vector2r: fill(static_cast<Vector2r*>(p)->data(), 2); break;
             case AttrKind::Vector3r: fill(static_cast<Vector3r*>(p)->data(), 3); break;
             case AttrKind::Vector6r: fill(static_cast<Vector6r*>(p)->data(), 6); break;
             case AttrKind::Matrix3r: fill(static_cast<Matrix3r*>(p)->data(), 9); break;
-            case AttrKind::Quaternionr: fill(static_cast<Quaternionr*>(p)->coeffs().data(), 4); break;
+            case AttrKind::Quaternionr: {
+                Quaternionr q = *static_cast<Quaternionr*>(p);
+                fill(q.coeffs().data(), 4);
+                if (!(std::isfinite(q.norm()) && q.norm() > 0)) throw FormatError(where + " must be a finite non-zero quaternion");
+                *static_cast<Quaternionr*>(p) = q;
+                break;
+            }
             case AttrKind::Vector2i: {
                 const auto x = numbers(v.text, 2, where);
-                *static_cast<Vector2i*>(p) = Vector2i((int)x[0], (int)x[1]);
+                *static_cast<Vector2i*>(p) = Vector2i(toInt(x[0], where), toInt(x[1], where));
                 break;
             }
             case AttrKind::Vector3i: {
                 const auto x = numbers(v.text, 3, where);
-                *static_cast<Vector3i*>(p) = Vector3i((int)x[0], (int)x[1], (int)x[2]);
+                *static_cast<Vector3i*>(p) = Vector3i(toInt(x[0], where), toInt(x[1], where), toInt(x[2], where));
                 break;
             }
             case AttrKind::IntVector: {
                 auto& dst = *static_cast<std::vector<int>*>(p);
                 dst.clear();
-                for (Real x : numbers(v.text, -1, where)) {
-                    if (x != std::floor(x)) throw FormatError(where + ": expected integers");
-                    dst.push_back((int)x);
-                }
+                for (Real x : numbers(v.text, -1, where)) dst.push_back(toInt(x, where));
                 break;
             }
-            case AttrKind::RealVector: *static_cast<std::vector<Real>*>(p) = numbers(v.text, -1, where); break;
+            case AttrKind::RealVector: {
+                const auto x = numbers(v.text, -1, where);
+                checkFlags(a, x.data(), nullptr, (int)x.size(), where);
+                *static_cast<std::vector<Real>*>(p) = x;
+                break;
+            }
             case AttrKind::Vector3rVector: {
                 const auto x = numbers(v.text, -1, where);
                 if (x.size() % 3) throw FormatError(where + ": expected triplets of numbers");
+                checkFlags(a, x.data(), nullptr, (int)x.size(), where);
                 auto& dst = *static_cast<std::vector<Vector3r>*>(p);
                 dst.clear();
                 for (size_t i = 0; i < x.size(); i += 3) dst.emplace_back(x[i], x[i + 1], x[i + 2]);
