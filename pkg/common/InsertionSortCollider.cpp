@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <stdexcept>
 #include <core/Scene.hpp>
 #include <pkg/common/InsertionSortCollider.hpp>
 #include <pkg/common/Sphere.hpp>
@@ -200,6 +201,7 @@ void InsertionSortCollider::postLoad() {
 }
 
 void InsertionSortCollider::action() {
+    if (!boundDispatcher) throw std::invalid_argument("InsertionSortCollider.boundDispatcher must not be None"); // (from Python or a file)
     if (scene->serial != lastScene) { // used in another scene before (engines kept across O.reset()): start afresh
         if (lastScene >= 0) lastBodyChanges = -1;
         lastScene = scene->serial;

@@ -539,6 +539,8 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
 
 void InteractionLoop::action() {
     Scene& s = *scene;
+    if (!geomDispatcher || !physDispatcher || !lawDispatcher) // (None assigned from Python or read from a file)
+        throw std::invalid_argument("InteractionLoop: geomDispatcher, physDispatcher and lawDispatcher must not be None");
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
     if (changed) checkFunctorChain();
     for (auto* d : std::initializer_list<Dispatcher*>{geomDispatcher.get(), physDispatcher.get(), lawDispatcher.get()})

@@ -1,0 +1,60 @@
+"""Fuzzing of the Python interface (scripts/fuzz/fuzz_api.py, doc/fuzzing.md): a fixed seed and a fixed
+number of random call sequences (bad ids, NaN and infinities, wrong types, erased bodies, views kept past
+erasure or O.reset(), engines changed during a run), each followed by three steps: no crash, no hang,
+every refusal an ordinary exception with a message, never a non-finite body state. The counts are
+printed (pytest -s) and recorded.
+
+Below: one regression test for each bug the harness found.
+"""
+import json
+import math
+import pathlib
+
+import pytest
+
+import yade
+from yade import O
+from test_fuzz_loader import run_harness
+
+REPO = pathlib.Path(__file__).resolve().parent.parent
+SCRIPT = REPO / 'scripts' / 'fuzz' / 'fuzz_api.py'
+CASES = 1500
+SEED = 7
+
+
+def test_random_calls_never_crash_nor_leave_a_non_finite_state(tmp_path, record_property):
+    summary, report = run_harness(SCRIPT, CASES, SEED, tmp_path)
+    counts = summary['counts']
+    record_property('fuzz_api_cases', sum(counts.values()))
+    record_property('fuzz_api_counts', json.dumps(counts))
+    assert sum(counts.values()) == CASES, report
+    assert summary['failures'] == [], report
+    assert counts.get('ran', 0) > CASES // 4, report
+
+
+# ====================================================================== regressions
+
+def small_scene():
+    from yade.utils import sphere
+    O.bodies.append([sphere((0, 0, 0), .1), sphere((.19, 0, 0), .1)])
+    O.engines = [yade.ForceResetter(), yade.InsertionSortCollider([yade.Bo1_Sphere_Aabb()]),
+                 yade.InteractionLoop([yade.Ig2_Sphere_Sphere_ScGeom()], [yade.Ip2_FrictMat_FrictMat_FrictPhys()],
+                                      [yade.Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 yade.NewtonIntegrator()]
+    O.dt = 1e-5
+
+
+@pytest.mark.parametrize('engine, attr', [(2, 'geomDispatcher'), (2, 'physDispatcher'), (2, 'lawDispatcher'),
+                                          (1, 'boundDispatcher')])
+def test_a_dispatcher_set_to_None_stops_the_step_with_an_error(fresh_scene, engine, attr):
+    """Bug (case 2 of seed 7): InteractionLoop.geomDispatcher = None, then O.step(): segmentation fault.
+    Fix (pkg/common/InteractionLoop.cpp, InsertionSortCollider.cpp): the engine refuses to run without its
+    dispatchers (ValueError), from Python as from a file."""
+    small_scene()
+    O.step()
+    setattr(O.engines[engine], attr, None)
+    with pytest.raises(ValueError, match=attr):
+        O.step()
+    O.stringToScene(O.sceneToString())  # the same scene read from a file
+    with pytest.raises(ValueError, match=attr):
+        O.step()
