@@ -389,6 +389,8 @@ std::shared_ptr<Scene> SceneIO::load(const std::string& data) {
         return fromNode(NodeIO::parse(data));
     } catch (FormatError&) {
         throw;
+    } catch (std::bad_alloc&) { // out of memory (MemoryError in Python): not a corrupt file
+        throw;
     } catch (std::exception& e) { // stoll on garbage, bad dt...
         throw FormatError(std::string("corrupt file: ") + e.what());
     }
