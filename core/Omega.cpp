@@ -2,6 +2,9 @@
 #include <lib/base/ThreadPinning.hpp>
 #include <cstdio>
 #include <stdexcept>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace yade {
 
@@ -45,6 +48,9 @@ void Omega::requireStopped(const char* what) const {
 
 void Omega::loop() {
     Scene& s = scene();
+#ifdef _OPENMP
+    omp_set_num_threads(s.threads()); // (each thread has its own count: setNumThreads set the caller's)
+#endif
     pinLoopThreads(s.threads());
     endedByRequest = false;
     bool reachedEnd = false;
