@@ -11,6 +11,15 @@
 
 namespace yade {
 
+// The end of a step: iter and time advance. Python may read O.iter and O.time while the loop thread
+// does this (a script waiting for a background run): relaxed atomic stores, as the reads, so that the
+// two threads do not race (plain moves on x86-64; a data race is undefined behaviour).
+static void advanceClock(Scene& s) {
+    __atomic_store_n(&s.iter, s.iter + 1, __ATOMIC_RELAXED);
+    Real t = s.time + s.dt;
+    __atomic_store(&s.time, &t, __ATOMIC_RELAXED);
+}
+
 static std::string nowString(const char* fmt) {
     std::time_t t = std::time(nullptr);
     char buf[64];
@@ -120,8 +129,7 @@ void Scene::moveToNextTimeStep() {
     subStep = 0; // (what O.subStep reads inside a whole step)
     const auto running = engines; // engines may be replaced from inside a step
     for (const auto& e : running) runEngine(*e);
-    ++iter;
-    time += dt;
+    advanceClock(*this);
 }
 
 void Scene::moveToNextSubStep() {
@@ -137,8 +145,7 @@ void Scene::moveToNextSubStep() {
     }
     subStep = -1;
     leaveStep();
-    ++iter;
-    time += dt;
+    advanceClock(*this);
 }
 
 Body::id_t Scene::appendBody(const std::shared_ptr<Body>& b) {
