@@ -128,3 +128,32 @@ def test_deposition_across_thread_counts_differs_at_rounding_level_then_drifts()
     assert d[1][0] <= 1e-15 and d[1][1] <= 1e-14
     # 530 contacts: a granular flow has amplified the differences (measured 2.4e-2 and 0.56)
     assert d[2][0] <= .2
+
+
+def test_two_threads_reload_differs_only_by_the_split_of_the_pairs_between_threads():
+    """With two threads a reloaded run is exact to rounding level only: the interaction loop splits
+    the pairs between its threads weighing them by wasReal when the container last changed, and a
+    load rebuilds the split at its first step (doc/reliability.md). Rebuilt at the same step in both
+    runs (a pair erased in both right after the save), the reloaded run is the uninterrupted one
+    bit for bit: nothing else differs."""
+    def run(reload, rebuild):
+        O.reset()
+        setNumThreads(2)
+        dense(5)
+        O.run(150, True)
+        if reload:
+            O.saveTmp('split')
+            O.loadTmp('split')
+        if rebuild:
+            i = O.interactions.nth(len(O.interactions) - 1)
+            O.interactions.erase(i.id1, i.id2)
+        O.run(200, True)
+        a = O.bodies.arrays()
+        r = [(np.array(a.pos), np.array(a.vel))]
+        del a
+        return r
+    assert same(run(True, True), run(False, True))
+    a, b = run(True, False), run(False, False)
+    dp = normwise(a[0][0], b[0][0])
+    print('\ntwo threads, reloaded vs uninterrupted: positions %.3g' % dp)
+    assert dp <= 1e-11  # measured 2.3e-13 (not asserted 0: fixing the split would make it 0)

@@ -100,7 +100,7 @@ def test_kill_9_while_saving_leaves_the_previous_file(tmp_path):
         assert version in (lastDone, lastDone + 1)
         assert len(O.bodies) == n and O.bodies[n - 1].state.vel[0] == version
     injected('SIGKILL while saving', kills)
-    assert midWrite >= 8, midWrite  # some kills fell inside the writing
+    assert midWrite >= 5, midWrite  # some kills fell inside the writing
     # the next save of a file removes the temporaries that dead processes left beside it
     for name in names:
         O.save(str(tmp_path / name))
