@@ -17,8 +17,10 @@ Anything else is a failure: another exception type, a changed scene, a non-finit
 or a hang (each worker process runs a chunk of cases, see runner.py). The counts per outcome are
 printed, with the case number of every failure (replay it with --replay).
 """
+import atexit
 import math
 import os
+import shutil
 import sys
 import tempfile
 
@@ -109,6 +111,7 @@ def factory(seed, describeOnly=False):
     base = O.sceneToString()
     assert O.sceneToString() == base, 'O.sceneToString() is not repeatable'
     tmp = tempfile.mkdtemp(prefix='fuzz-loader-')
+    atexit.register(shutil.rmtree, tmp, True)
     clean = [True]
 
     def runOne(k):

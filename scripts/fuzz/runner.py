@@ -25,7 +25,7 @@ def parseArgs(description, defaultCases):
     p.add_argument('--seed', type=int, default=7, help='seed of the run: case k of seed S is always the same')
     p.add_argument('--first', type=int, default=0, help='number of the first case')
     p.add_argument('--chunk', type=int, default=1000, help='cases per worker process')
-    p.add_argument('--timeout', type=float, default=600, help='seconds a chunk may take before it counts as a hang')
+    p.add_argument('--timeout', type=float, default=60, help='seconds a case may take before it counts as a hang')
     p.add_argument('--replay', type=int, default=None, metavar='K', help='run case K alone, in this process, verbosely')
     p.add_argument('--verbose', action='store_true', help='print every case')
     p.add_argument('--json', default=None, metavar='FILE', help='also write the summary to FILE as JSON')
@@ -45,18 +45,22 @@ class Progress:
             os.pwrite(self.fd, b'%-20d\n' % k, 0)
 
 
-def runCases(runOne, first, count, progress, verbose):
-    """Worker loop: runOne(k) -> (outcome, description, detail) for k in [first, first+count)."""
+def runCases(runOne, first, count, progress, verbose, timeout):
+    """Worker loop: runOne(k) -> (outcome, description, detail) for k in [first, first+count). A case
+    that takes more than timeout seconds ends the worker (faulthandler prints the stacks, exit status 1)."""
+    import faulthandler
     counts = collections.Counter()
     failures = []
     for k in range(first, first + count):
         progress.mark(k)
+        faulthandler.dump_traceback_later(timeout, exit=True)
         outcome, description, detail = runOne(k)
         counts[outcome] += 1
         if verbose:
             print('case %d: %s | %s | %s' % (k, outcome, description, detail), flush=True)
         if outcome.startswith('FAIL'):
             failures.append({'case': k, 'outcome': outcome, 'description': description, 'detail': detail})
+    faulthandler.cancel_dump_traceback_later()
     progress.mark(first + count)
     return {'counts': dict(counts), 'failures': failures}
 
@@ -82,11 +86,12 @@ def parent(script, args, name):
         while k < end:
             n = min(args.chunk, end - k)
             cmd = [sys.executable, script, '--worker', '--seed', str(args.seed), '--first', str(k), '--cases', str(n),
-                   '--progress', progressFile] + (['--verbose'] if args.verbose else [])
+                   '--timeout', str(args.timeout), '--progress', progressFile] + (['--verbose'] if args.verbose else [])
             if os.path.exists(progressFile):
                 os.unlink(progressFile)
             try:
-                r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=args.timeout)
+                r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                   timeout=args.timeout * n + 120)  # (the worker's own watchdog comes first)
                 rc, out, err = r.returncode, r.stdout, r.stderr
             except subprocess.TimeoutExpired as e:
                 rc, out, err = None, e.stdout or '', e.stderr or ''
@@ -108,7 +113,7 @@ def parent(script, args, name):
                 bad = k
             if bad >= k + n:  # (died after its last case: e.g. at exit)
                 bad = k + n - 1
-            if rc is None:
+            if rc is None or (rc == 1 and 'Timeout (' in err):
                 outcome = 'FAIL hang (over %g s)' % args.timeout
             elif rc < 0:
                 outcome = 'FAIL crash (%s)' % signal.Signals(-rc).name
@@ -120,7 +125,7 @@ def parent(script, args, name):
             if bad > k:
                 counts.update(_rerun(script, args, k, bad - k, tmp))
             failures.append({'case': bad, 'outcome': outcome, 'description': _describe(script, args.seed, bad),
-                             'detail': err.strip().splitlines()[-1] if err.strip() else ''})
+                             'detail': ' / '.join(err.strip().splitlines()[-6:])})
             k = bad + 1
     elapsed = time.time() - start
     summary = {'harness': name, 'seed': args.seed, 'first': args.first, 'cases': args.cases,
@@ -131,8 +136,8 @@ def parent(script, args, name):
 
 def _rerun(script, args, first, n, tmp):
     cmd = [sys.executable, script, '--worker', '--seed', str(args.seed), '--first', str(first), '--cases', str(n),
-           '--progress', os.path.join(tmp, 'progress2')]
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=args.timeout)
+           '--timeout', str(args.timeout), '--progress', os.path.join(tmp, 'progress2')]
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=args.timeout * n + 120)
     if r.returncode == 0 and r.stdout.strip():
         return json.loads(r.stdout.strip().splitlines()[-1])['counts']
     return {'FAIL rerun of cases %d..%d' % (first, first + n - 1): 1}
@@ -151,15 +156,6 @@ def report(summary):
     print('  failures: %d' % len(summary['failures']), flush=True)
 
 
-def limitMemory(gib=8):
-    """A corrupt count that makes a reader allocate without bound shows as MemoryError, not as a
-    machine out of memory (not under AddressSanitizer, which reserves terabytes of address space)."""
-    if any('asan' in os.environ.get(v, '') for v in ('LD_PRELOAD', 'ASAN_OPTIONS')):
-        return
-    import resource
-    resource.setrlimit(resource.RLIMIT_AS, (gib << 30, resource.getrlimit(resource.RLIMIT_AS)[1]))
-
-
 def main(script, name, defaultCases, runOneFactory):
     """Entry point of a harness. runOneFactory(seed, describeOnly=False) -> runOne, and runOne(k) ->
     (outcome, description, detail); the factory is only called in a worker or for --replay, so
@@ -170,14 +166,16 @@ def main(script, name, defaultCases, runOneFactory):
         print(runOneFactory(args.seed, describeOnly=True)(args.replay)[1])
         return 0
     args = parseArgs(name, defaultCases)
+    import faulthandler
+    faulthandler.enable()  # a crash prints the Python stack (to the worker's stderr)
     if args.replay is not None:
+        faulthandler.dump_traceback_later(args.timeout, exit=True)  # a hang too
         outcome, description, detail = runOneFactory(args.seed)(args.replay)
         print('case %d: %s\n  %s\n  %s' % (args.replay, outcome, description, detail))
         return 1 if outcome.startswith('FAIL') else 0
     if args.worker:
-        limitMemory()
         runOne = runOneFactory(args.seed)
-        result = runCases(runOne, args.first, args.cases, Progress(args.progress), args.verbose)
+        result = runCases(runOne, args.first, args.cases, Progress(args.progress), args.verbose, args.timeout)
         sys.stdout.flush()
         print(json.dumps(result), flush=True)
         return 0
