@@ -58,3 +58,16 @@ def test_a_dispatcher_set_to_None_stops_the_step_with_an_error(fresh_scene, engi
     O.stringToScene(O.sceneToString())  # the same scene read from a file
     with pytest.raises(ValueError, match=attr):
         O.step()
+
+
+@pytest.mark.parametrize('ids, exc', [(('3', 1), TypeError), ((None, 1), TypeError), ((1.5, 1), TypeError),
+                                      ((2 ** 63, 0), IndexError), ((0, -2 ** 31 - 1), IndexError)])
+def test_interactions_indexed_with_a_bad_id_raise_a_clear_error(fresh_scene, ids, exc):
+    """Bug: O.interactions['3', 1] (or None, 1.5, 2**63) raised 'RuntimeError: Unable to cast Python
+    instance to C++ type'. Fix (py/wrapper/OmegaWrapper.cpp): TypeError naming the id, or IndexError
+    ('No such interaction') for an int beyond the range of ids."""
+    small_scene()
+    O.step()
+    with pytest.raises(exc, match='body id must be an int|No such interaction'):
+        O.interactions[ids]
+    assert O.interactions[0, 1].id1 == 0

@@ -228,7 +228,16 @@ struct RealInteractionIterator {
 struct InteractionContainerProxy {
     py::object get(py::tuple ids) {
         if (ids.size() != 2) throw py::type_error("O.interactions[id1,id2] takes two body ids");
-        const auto& I = scene().interactions.find(py::cast<int>(ids[0]), py::cast<int>(ids[1]));
+        for (py::handle id : ids) // (py::cast<int> of anything else raised "RuntimeError: Unable to cast Python instance")
+            if (!py::isinstance<py::int_>(id)) throw py::type_error("O.interactions[id1,id2]: a body id must be an int, got " + std::string(py::repr(id)));
+        int id1, id2;
+        try {
+            id1 = py::cast<int>(ids[0]);
+            id2 = py::cast<int>(ids[1]);
+        } catch (py::cast_error&) { // beyond the range of an int: no body has that id
+            throw py::index_error("No such interaction: ##" + std::string(py::str(ids[0])) + "+" + std::string(py::str(ids[1])));
+        }
+        const auto& I = scene().interactions.find(id1, id2);
         if (!I) throw py::index_error("No such interaction: ##" + std::string(py::str(ids[0])) + "+" + std::string(py::str(ids[1])));
         return py::cast(I);
     }
