@@ -199,22 +199,30 @@ except PermissionError as e:
 '''
 
 
-def test_unwritable_directory_gives_a_PermissionError_naming_the_file(tmp_path):
-    d = tmp_path / 'readonly'
-    d.mkdir()
-    (d / 'f.yade').write_bytes(b'previous content')
-    d.chmod(0o555)
-    os.chmod(tmp_path, 0o755)  # (nobody must reach it)
+def test_unwritable_directory_gives_a_PermissionError_naming_the_file():
+    import shutil
+    import tempfile
+    top = tempfile.mkdtemp(prefix='yade-faults-')  # (pytest's tmp_path is private to root)
     try:
-        r = python(UNWRITABLE, d / 'f.yade', cwd='/')
+        os.chmod(top, 0o755)
+        d = os.path.join(top, 'readonly')
+        os.mkdir(d)
+        path = os.path.join(d, 'f.yade')
+        with open(path, 'wb') as f:
+            f.write(b'previous content')
+        os.chmod(d, 0o555)
+        r = python(UNWRITABLE, path, cwd='/')
+        if os.geteuid() == 0 and 'Operation not permitted' in r.stderr:
+            pytest.skip('cannot drop root privileges here')
+        assert r.returncode == 0, r.stderr[-3000:]
+        assert "ERROR PermissionError [Errno 13] Permission denied: '%s'" % path in r.stdout
+        with open(path, 'rb') as f:
+            assert f.read() == b'previous content'
+        assert temporaries(d) == []
+        injected('unwritable directory')
     finally:
-        d.chmod(0o755)
-    if os.geteuid() == 0 and 'Operation not permitted' in r.stderr:
-        pytest.skip('cannot drop root privileges here')
-    assert r.returncode == 0, r.stderr[-3000:]
-    assert "ERROR PermissionError [Errno 13] Permission denied: '%s'" % (d / 'f.yade') in r.stdout
-    assert (d / 'f.yade').read_bytes() == b'previous content' and temporaries(d) == []
-    injected('unwritable directory')
+        os.chmod(os.path.join(top, 'readonly'), 0o755)
+        shutil.rmtree(top)
 
 
 # ====================================================================== faults during a background run
