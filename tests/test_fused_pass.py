@@ -42,7 +42,10 @@ def run(fused, steps, neverErase=False, energy=False, frictionAngle=.5, mindlin=
     a = O.bodies.arrays()
     state = {k: np.array(getattr(a, k)).tobytes() for k in ('pos', 'vel', 'angVel', 'ori', 'force', 'torque')}
     contacts = sorted((i.id1, i.id2, tuple(i.phys.normalForce), tuple(i.phys.shearForce), tuple(i.geom.normal),
-                       tuple(i.geom.shearInc), i.geom.penetrationDepth) for i in O.interactions if i.isReal)
+                       tuple(i.geom.shearInc), i.geom.penetrationDepth, tuple(i.geom.contactPoint), i.phys.kn, i.phys.ks)
+                      + ((tuple(i.phys.normalViscous), tuple(i.phys.shearViscous), tuple(i.phys.shearElastic),
+                          tuple(i.phys.usElastic), tuple(i.phys.usTotal), i.phys.isSliding) if mindlin else ())
+                      for i in O.interactions if i.isReal)
     sliding = sum(1 for i in O.interactions if i.isReal
                   and i.phys.shearForce.norm() >= .999 * i.phys.normalForce.norm() * i.phys.tangensOfFrictionAngle > 0)
     return state, contacts, ended, sliding, dict(O.energy.items()) if energy else None
@@ -74,13 +77,15 @@ def test_fused_pass_is_used_for_frictionless_contacts_too():
 
 @pytest.mark.parametrize("neverErase", [False, True], ids=["plain", "neverErase"])
 def test_fused_hertz_mindlin_pass_gives_the_same_bits_as_the_two_functors(neverErase):
-    """Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_MindlinPhys_Mindlin: the functors' own code in one
-    loop (with loads ahead), so the same bits."""
+    """Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_MindlinPhys_Mindlin: the two-lane pass
+    (pkg/dem/Ig2_Sphere_Sphere_ScGeom_Mindlin.cpp) gives the bits of the two functors, every
+    attribute of the contacts included (viscous and elastic parts, displacements, isSliding)."""
     fused = run(True, 1500, neverErase, mindlin=True)
     general = run(False, 1500, neverErase, mindlin=True)
     state, contacts, ended, sliding, _ = fused
     assert len(contacts) > 300, len(contacts)
     assert neverErase or ended > 20, "too few contacts ended: %d" % ended
     assert sliding > 0, "no sliding contact"
+    assert sum(1 for c in contacts if c[-1]) > 0 and sum(1 for c in contacts if c[-5] != (0, 0, 0)) > 100  # sliding; shear damping
     assert fused[0] == general[0]
     assert fused[1] == general[1]

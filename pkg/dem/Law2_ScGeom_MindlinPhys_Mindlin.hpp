@@ -3,7 +3,9 @@
 // MindlinPhys.betan/betas; optional DMT adhesion and rolling/twisting moments.
 #pragma once
 #include <atomic>
+#include <core/BodyStore.hpp>
 #include <core/LawDispatcher.hpp>
+#include <core/State.hpp>
 #include <pkg/dem/MindlinPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
@@ -34,6 +36,13 @@ public:
     }
     bool go(ScGeom& geom, MindlinPhys& phys, const Contact& c);
     void prepare() override;
+    // Effective mass of the pair; a body that is not dynamic counts as infinitely heavy.
+    static Real effectiveMass(const BodyStore::Columns& b, long id1, long id2) {
+        const bool d1 = b.blockedDOFsMask[id1] != State::DOF_ALL, d2 = b.blockedDOFsMask[id2] != State::DOF_ALL;
+        const Real m1 = b.mass[id1], m2 = b.mass[id2];
+        if (d1 && d2) return m1 * m2 / (m1 + m2);
+        return d1 ? m1 : d2 ? m2 : std::max(m1, m2);
+    }
     // Python methods: the normal elastic energy (sum of 2/5·kno·u^(5/2)), the fraction of real
     // contacts that slide, and the number that pull (adhesion).
     static Real normElastEnergy(const Scene& s);
