@@ -9,6 +9,7 @@
 #pragma once
 #include <core/BodyStore.hpp>
 #include <lib/base/Math.hpp>
+#include <atomic>
 #include <vector>
 #ifdef _OPENMP
 #include <omp.h>
@@ -74,10 +75,11 @@ public:
 
 private:
     // Written only when set: threads adding forces in parallel then only read the flag, and its
-    // cache line is not passed back and forth between cores.
+    // cache line is not passed back and forth between cores. Relaxed atomic accesses (plain loads
+    // and stores on x86-64): with plain bools one thread's store and another's load were a data race.
     void markUnsynced() {
-        if (synced) synced = false;
-        if (clean) clean = false;
+        if (synced.load(std::memory_order_relaxed)) synced.store(false, std::memory_order_relaxed);
+        if (clean.load(std::memory_order_relaxed)) clean.store(false, std::memory_order_relaxed);
     }
     // whether body id is in thread th's range (with one thread: every body)
     bool owns(int th, int id) const { return id >= rangeStart[th] && id < rangeStart[th + 1]; }
@@ -110,9 +112,10 @@ private:
     };
     std::vector<RemoteList> remote; // [thread]
     std::vector<int> rangeStart; // thread t's range: rangeStart[t] .. rangeStart[t + 1] - 1
-    bool synced = true, anyPermanent = false;
-    bool permInTotals = false; // this step's totals include the permanent forces
-    bool clean = true;         // every total is zero and no list holds anything
+    std::atomic<bool> synced{true}; // (set by any thread adding forces: markUnsynced)
+    bool anyPermanent = false;
+    bool permInTotals = false;     // this step's totals include the permanent forces
+    std::atomic<bool> clean{true}; // every total is zero and no list holds anything (as synced)
 };
 
 } // namespace yade
