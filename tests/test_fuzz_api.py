@@ -71,3 +71,24 @@ def test_interactions_indexed_with_a_bad_id_raise_a_clear_error(fresh_scene, ids
     with pytest.raises(exc, match='body id must be an int|No such interaction'):
         O.interactions[ids]
     assert O.interactions[0, 1].id1 == 0
+
+
+@pytest.mark.parametrize('key, exc', [(None, TypeError), (1.5, TypeError), ((1, 2), TypeError), (2 ** 63, IndexError)])
+def test_materials_indexed_with_a_bad_key_raise_a_clear_error(fresh_scene, key, exc):
+    """Bug: O.materials[None] (or 1.5, (1, 2), 2**63) raised 'RuntimeError: Unable to cast Python instance to
+    C++ type'. Fix (py/wrapper/OmegaWrapper.cpp): TypeError naming the key, or IndexError for an int beyond
+    the range of ids."""
+    O.materials.append(yade.FrictMat())
+    with pytest.raises(exc, match='expected an int id or a str label|out of range'):
+        O.materials[key]
+    assert O.materials[0].id == 0
+
+
+def test_a_bool_attribute_takes_an_int_of_any_size(fresh_scene):
+    """Bug: a bool attribute set to an int beyond 64 bits (2**64) raised 'RuntimeError: Unable to cast'.
+    Fix (py/wrapper/Attributes.cpp): any int, non-zero is true."""
+    e = yade.NewtonIntegrator()
+    e.dead = 2 ** 64
+    assert e.dead is True
+    e.dead = 0
+    assert e.dead is False

@@ -159,7 +159,7 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
         case AttrKind::Bool:
             if (!py::isinstance<py::bool_>(v) && !py::isinstance<py::int_>(v))
                 throw py::type_error(where + ": expected bool, got " + std::string(py::str(py::type::of(v).attr("__name__"))));
-            *static_cast<bool*>(p) = py::isinstance<py::bool_>(v) ? py::cast<bool>(v) : py::cast<long long>(v) != 0;
+            *static_cast<bool*>(p) = PyObject_IsTrue(v.ptr()) == 1; // (an int of any size: non-zero is true)
             break;
         case AttrKind::Int: {
             if (py::isinstance<py::float_>(v)) throw py::type_error(where + ": expected int, got float");

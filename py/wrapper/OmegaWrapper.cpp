@@ -321,7 +321,13 @@ struct MaterialContainerProxy {
                 if (m->label == label) return m;
             throw py::key_error("No material labeled '" + label + "'.");
         }
-        const long i = normIndex(py::cast<long>(key), mats.size());
+        if (!py::isinstance<py::int_>(key)) // (py::cast<long> of anything else raised "RuntimeError: Unable to cast Python instance")
+            throw py::type_error("O.materials[...]: expected an int id or a str label, got " + std::string(py::repr(key)));
+        long i = -1;
+        try {
+            i = normIndex(py::cast<long>(key), mats.size());
+        } catch (py::cast_error&) { // beyond the range of a long: out of range
+        }
         if (i < 0 || i >= (long)mats.size()) throw py::index_error("Material id " + std::string(py::str(key)) + " out of range.");
         return mats[i];
     }
