@@ -465,9 +465,10 @@ def factory(seed, describeOnly=False):
                 r = f(c)
                 done.append(r if isinstance(r, str) else r[0] if isinstance(r, tuple) else f.__name__)
             except CLEAR as e:
-                if not str(e):
+                if not str(e) or str(e).startswith('Unable to cast'):  # (pybind11's message names neither value nor type)
                     O.pause()
-                    return 'FAIL %s without a message' % type(e).__name__, description, ' | '.join(done + [f.__name__])
+                    return 'FAIL %s without a clear message' % type(e).__name__, description, \
+                        ' | '.join(done + ['%s: %s' % (f.__name__, str(e)[:80])])
                 done.append('%s: %s: %s' % (f.__name__, type(e).__name__, str(e)[:80]))
             except Exception as e:
                 O.pause()

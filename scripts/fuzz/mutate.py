@@ -250,6 +250,8 @@ def _withChildren(root):
 
 def deleteChild(rng, root):
     parents = _withChildren(root)
+    if not parents:
+        return 'no children'
     p = rng.choice(parents)
     c = p.children.pop(rng.randrange(len(p.children)))
     return 'deleted <%s> from <%s>' % (c.tag, p.tag)
@@ -257,7 +259,10 @@ def deleteChild(rng, root):
 
 def duplicateChild(rng, root):
     """A child copied among its siblings: duplicated bodies, interactions, ids, attributes."""
-    p = rng.choice(_withChildren(root))
+    parents = _withChildren(root)
+    if not parents:
+        return 'no children'
+    p = rng.choice(parents)
     c = rng.choice(p.children)
     p.children.insert(rng.randrange(len(p.children) + 1), c.copy())
     return 'duplicated <%s> in <%s>' % (c.tag, p.tag)
@@ -265,6 +270,8 @@ def duplicateChild(rng, root):
 
 def moveChild(rng, root):
     parents = _withChildren(root)
+    if not parents:
+        return 'no children'
     p = rng.choice(parents)
     c = p.children.pop(rng.randrange(len(p.children)))
     inside = {id(n) for n, _ in c.walk()}  # (not into itself: the tree must stay a tree)
@@ -274,7 +281,10 @@ def moveChild(rng, root):
 
 
 def swapSiblings(rng, root):
-    p = rng.choice(_withChildren(root))
+    parents = _withChildren(root)
+    if not parents:
+        return 'no children'
+    p = rng.choice(parents)
     i, j = rng.randrange(len(p.children)), rng.randrange(len(p.children))
     p.children[i], p.children[j] = p.children[j], p.children[i]
     return 'swapped children %d %d of <%s>' % (i, j, p.tag)
@@ -313,6 +323,8 @@ def changeAttrName(rng, root):
 
 def dropAttr(rng, root):
     nodes = [n for n, _ in root.walk() if n.attrs]
+    if not nodes:
+        return 'no attributes'
     n = rng.choice(nodes)
     k = rng.choice(sorted(n.attrs))
     del n.attrs[k]
