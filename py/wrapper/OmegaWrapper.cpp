@@ -553,8 +553,13 @@ void bindOmega(py::module_& m) {
                 scene().time = 0;
                 startTime = std::chrono::steady_clock::now();
             }, "Set O.iter, O.time and O.realtime back to zero (nothing else changes)")
-            .def_property_readonly("iter", [](OmegaProxy&) { return scene().iter; }, "Current iteration (step) number")
-            .def_property_readonly("time", [](OmegaProxy&) { return scene().time; }, "Simulated time [s]")
+            // (read while a background run may advance them: relaxed atomic loads, as the stores in Scene.cpp)
+            .def_property_readonly("iter", [](OmegaProxy&) { return __atomic_load_n(&scene().iter, __ATOMIC_RELAXED); }, "Current iteration (step) number")
+            .def_property_readonly("time", [](OmegaProxy&) {
+                Real t;
+                __atomic_load(&scene().time, &t, __ATOMIC_RELAXED);
+                return t;
+            }, "Simulated time [s]")
             .def_property_readonly("realtime", [](OmegaProxy&) {
                 return std::chrono::duration<double>(std::chrono::steady_clock::now() - startTime).count();
             }, "Wall-clock seconds since start-up")
