@@ -56,6 +56,38 @@ void checkFlags(const AttrInfo& a, const Real* x, const Real* dflt, int n, const
     }
 }
 
+// Strings come from Python, so they are UTF-8. A damaged one would only fail later, when Python reads it
+// (a label is read at once: UnicodeDecodeError after the scene was replaced), so it refuses the file.
+bool validUtf8(const std::string& s) {
+    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
+    const auto* end = p + s.size();
+    while (p < end) {
+        const unsigned c = *p++;
+        int more;
+        unsigned lo = 0x80, hi = 0xbf; // the range of the first continuation byte
+        if (c < 0x80) continue;
+        else if (c >= 0xc2 && c <= 0xdf) more = 1;
+        else if (c >= 0xe0 && c <= 0xef) {
+            more = 2;
+            if (c == 0xe0) lo = 0xa0;      // (overlong)
+            else if (c == 0xed) hi = 0x9f; // (surrogates)
+        } else if (c >= 0xf0 && c <= 0xf4) {
+            more = 3;
+            if (c == 0xf0) lo = 0x90;      // (overlong)
+            else if (c == 0xf4) hi = 0x8f; // (above U+10FFFF)
+        } else return false;
+        if (end - p < more || *p < lo || *p > hi) return false;
+        for (++p, --more; more > 0; --more, ++p)
+            if (*p < 0x80 || *p > 0xbf) return false;
+    }
+    return true;
+}
+
+const std::string& utf8(const std::string& s, const std::string& where) {
+    if (!validUtf8(s)) throw FormatError(where + ": a string that is not valid UTF-8 ('" + s.substr(0, 40) + "')");
+    return s;
+}
+
 // Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
 std::vector<Real> numbers(const std::string& text, long n, const std::string& what) {
     std::vector<Real> r;
@@ -199,7 +231,7 @@ private:
                 break;
             }
             case AttrKind::Real: fill(static_cast<Real*>(p), 1); break;
-            case AttrKind::String: *static_cast<std::string*>(p) = v.text; break;
+            case AttrKind::String: *static_cast<std::string*>(p) = utf8(v.text, where); break;
             case AttrKind::Vector2r: fill(static_cast<Vector2r*>(p)->data(), 2); break;
             case AttrKind::Vector3r: fill(static_cast<Vector3r*>(p)->data(), 3); break;
             case AttrKind::Vector6r: fill(static_cast<Vector6r*>(p)->data(), 6); break;
@@ -245,7 +277,7 @@ private:
             case AttrKind::StringVector: {
                 auto& dst = *static_cast<std::vector<std::string>*>(p);
                 dst.clear();
-                for (const Node& c : v.children) dst.push_back(c.text);
+                for (const Node& c : v.children) dst.push_back(utf8(c.text, where));
                 break;
             }
             case AttrKind::Ptr: {
@@ -339,8 +371,9 @@ std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
     s->setDt(parseReal(sc.attr("dt")));
     s->trackEnergy = sc.attr("trackEnergy") == "1";
     s->tags.clear();
-    for (const Node& t : sc.child("tags").children) s->tags[t.attr("name")] = t.text;
-    for (const Node& t : sc.child("energy").children) s->energy.set(t.attr("name"), parseReal(t.text), t.attr("cumulative") == "1");
+    for (const Node& t : sc.child("tags").children) s->tags[utf8(t.attr("name"), "a tag")] = utf8(t.text, "a tag");
+    for (const Node& t : sc.child("energy").children)
+        s->energy.set(utf8(t.attr("name"), "an energy term"), parseReal(t.text), t.attr("cumulative") == "1");
     Reader r;
     for (const Node& n : sc.child("materials").children) {
         auto m = readAs<Material>(r, n, "a Material");

@@ -123,3 +123,24 @@ def test_an_integer_out_of_the_range_of_an_int_is_refused(fresh_scene, cls, attr
     O.dt = 1e-5
     O.step()
     refused(edited(O.sceneToString(), cls, attr, text), 'expected a 32-bit integer')
+
+
+@pytest.mark.parametrize('cls, attr', [('FrictMat', 'label'), ('PyRunner', 'command')])
+@pytest.mark.parametrize('junk', ['\udcff\udcfe', 'a\udce9b', '\udced\udca0\udc80'])  # (bytes ff fe; e9 alone; a surrogate)
+def test_a_string_that_is_not_utf8_is_refused(fresh_scene, cls, attr, junk):
+    """Bug (case 3593 of seed 11): a label with bytes that are not UTF-8 loaded, then the labels were bound
+    in Python: UnicodeDecodeError, with the scene already replaced. Fix (core/SceneIO.cpp): strings,
+    tags and energy term names must be valid UTF-8, else FileFormatError."""
+    from yade.utils import sphere
+    O.materials.append(yade.FrictMat(label='mat'))
+    O.bodies.append(sphere((0, 0, 0), .1))
+    O.engines = [yade.PyRunner(command='pass', iterPeriod=100)]
+    for data in (O.sceneToString(), O._toBytes(True)):
+        refused(edited(data, cls, attr, junk), 'not valid UTF-8')
+
+
+def test_utf8_strings_round_trip(fresh_scene):
+    O.materials.append(yade.FrictMat(label='ünïcödé ✓ 𝄞'))
+    O.tags['clé ✓'] = 'valeur 𝄞'
+    O.stringToScene(O.sceneToString())
+    assert O.materials[0].label == 'ünïcödé ✓ 𝄞' and O.tags['clé ✓'] == 'valeur 𝄞'
