@@ -301,7 +301,7 @@ def factory(seed, describeOnly=False):
         if c.rng.random() < .5 and len(x):
             v = c.choice([NAN, INF, 0., 1.])
             x[c.rng.randrange(len(x))] = v
-            c.rawNonFinite |= not math.isfinite(v)
+            c.rawNonFinite |= not math.isfinite(v) or (col == 'ori' and v == 0)  # (a zero quaternion: NaN once normalized)
             return 'O.bodies.arrays().%s[...] = %r' % (col, v)
         return 'O.bodies.arrays().%s' % col
 
@@ -457,6 +457,7 @@ def factory(seed, describeOnly=False):
             return None, description, None
         O.pause()
         setNumThreads(1)
+        O.resetAllScenes()  # (the other world of O.switchWorld too: nothing is left from the case before)
         O.stringToScene(base)
         O.subStepping = False
         done = []
