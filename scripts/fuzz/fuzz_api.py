@@ -17,7 +17,7 @@ O.reset(); engines replaced during a background run...), then runs three steps. 
   * never leave a non-finite position, orientation or velocity in any body: a non-finite value is
     refused when set, and a step that cannot give a finite state stops with an exception.
 
-The counts per outcome (and of each call's outcomes) are printed, with the case number of every failure.
+The counts per outcome are printed, with the case number of every failure.
 """
 import math
 import os
