@@ -92,3 +92,26 @@ def test_a_bool_attribute_takes_an_int_of_any_size(fresh_scene):
     assert e.dead is True
     e.dead = 0
     assert e.dead is False
+
+
+def test_an_orientation_written_non_finite_or_zero_into_a_view_stops_the_next_step():
+    """Found by scripts/fuzz/fuzz_api.py (a NaN or zero written into an item of b.state.ori or of
+    O.bodies.arrays().ori skips the setter's check): NewtonIntegrator's stability guard now checks
+    orientations too, and the step refuses with the body named."""
+    import numpy as np
+    from yade import O
+    from yade import StabilityError
+    from yade.wrapper import ForceResetter, NewtonIntegrator
+    from yade.utils import sphere
+    for how in ('nan-view', 'zero-array'):
+        O.reset()
+        O.engines = [ForceResetter(), NewtonIntegrator()]
+        O.dt = 1e-4
+        O.bodies.append([sphere((0, 0, 0), 1), sphere((5, 0, 0), 1)])
+        O.step()
+        if how == 'nan-view':
+            O.bodies[1].state.ori[0] = float('nan')
+        else:
+            np.asarray(O.bodies.arrays().ori)[1] = 0
+        with pytest.raises(StabilityError, match='orientation'):
+            O.step()

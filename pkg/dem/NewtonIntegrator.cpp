@@ -158,7 +158,8 @@ void NewtonIntegrator::action() {
         const Vector3r pos = statePos + vel * dt;
         const Real angVelNorm = angVel.norm();
         const Real angle = angVelNorm * dt;
-        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav)) { // stability guard: keep the last finite state
+        const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
+        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
             continue;
@@ -231,7 +232,7 @@ void NewtonIntegrator::action() {
     s.positionMirror.maxMoved2 = maxMoved2;
     s.positionMirror.maxMovedTag = reference ? s.positionMirror.referenceTag : -1;
     maxVelocitySq = maxV2;
-    if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite"));
+    if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));
 }
 
 std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std::string& what) const {
