@@ -186,10 +186,10 @@ def test_missing_directory_gives_an_OSError_naming_the_file(tmp_path):
 UNWRITABLE = r'''
 import os, sys
 path = sys.argv[1]
+from yade import O  # (imported first: the build may not be readable by nobody)
+from yade.utils import sphere
 if os.geteuid() == 0:
     os.setgid(65534); os.setuid(65534)  # root writes anywhere: save as nobody
-from yade import O
-from yade.utils import sphere
 O.bodies.append(sphere((0, 0, 0), .1))
 try:
     O.save(path)
