@@ -551,10 +551,7 @@ void InteractionLoop::action() {
 
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
-    int threads = 1;
-#ifdef _OPENMP
-    threads = omp_get_max_threads();
-#endif
+    const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
     cacheBuilt = false;
     prepareShapes();
     if (intrs.objectsWrites != externalWrites() || intrs.objectsMade) { // (Python may have set geom or phys)

@@ -87,10 +87,7 @@ void NewtonIntegrator::action() {
     // With several threads a thread that is done helps with the others' last bodies (on shared
     // machines a core is often slower than the other for a while); the energy terms are then
     // summed per chunk, and the chunks in order after the loop.
-    int threads = 1;
-#ifdef _OPENMP
-    threads = omp_get_max_threads();
-#endif
+    const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
     const bool steal = threads > 1;
     if (steal) {
         while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
