@@ -22,8 +22,9 @@ public:
     // The batch reads the radii from BodyColumns (contiguous) instead of the shapes.
     void goBatch(const BodyColumns& b, Contact* c, size_t n, char* result) override;
     bool go(Real r1, Real r2, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force, Contact& contact);
-    // With Law2_ScGeom_FrictPhys_CundallStrack: both in one pass, the same arithmetic
-    // (IGeomFunctor::goBatchWithLaw; Ig2_Sphere_Sphere_ScGeom_CundallStrack.cpp).
+    // With Law2_ScGeom_FrictPhys_CundallStrack or Law2_ScGeom_MindlinPhys_Mindlin: both in one pass,
+    // the same arithmetic (IGeomFunctor::goBatchWithLaw; Ig2_Sphere_Sphere_ScGeom_CundallStrack.cpp,
+    // Ig2_Sphere_Sphere_ScGeom_Mindlin.cpp).
     bool fusesWith(const LawFunctor& law) const override;
     void goBatchWithLaw(const BodyColumns& b, Contact* c, size_t n, LawFunctor& law, char* keep) override;
     Real quickRejectFactor() const override { return interactionDetectionFactor; }
