@@ -10,6 +10,7 @@ class Interaction : public Serializable {
 public:
     static constexpr const char* classDoc = "A pair of bodies (1.2.1): potential when only their bounds overlap, real once it has geom (IGeom) and phys (IPhys).";
     Body::id_t id1 = -1, id2 = -1;
+    long long iterBorn = -1;     // the step the pair was added (the collider, or utils.createInteraction)
     long long iterMadeReal = -1;
     long long iterLastSeen = -1; // last iteration the collider saw the bounds overlap
     Vector3i cellDist = Vector3i::Zero();
@@ -22,6 +23,7 @@ public:
         Serializable::visit(v);
         v.attr("id1", id1, "Id of the first body", Attr::readonly);
         v.attr("id2", id2, "Id of the second body", Attr::readonly);
+        v.attr("iterBorn", iterBorn, "Step at which the interaction was added to the simulation", Attr::readonly);
         v.attr("iterMadeReal", iterMadeReal, "Iteration when the interaction became real (-1: not real)", Attr::readonly);
         v.attr("iterLastSeen", iterLastSeen, "Iteration when the collider last saw the bounds overlap", Attr::hidden);
         v.attr("cellDist", cellDist, "Periodic cell shift of body 2 relative to body 1", Attr::readonly);

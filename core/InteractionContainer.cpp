@@ -206,6 +206,7 @@ const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) cons
     Record& rec = ensureRecord(k);
     if (!rec.object) {
         rec.object = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
+        rec.object->iterBorn = iterBorn[k];
         if (contactOf[k] != noContact) const_cast<InteractionContainer*>(this)->makeViews(k);
         else {
             rec.object->geom = rec.geom;
@@ -219,6 +220,7 @@ const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) cons
 InteractionContainer::Ptr InteractionContainer::snapshot(size_t k) const {
     if (object(k)) return records[recordOf[k]].object;
     auto I = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
+    I->iterBorn = iterBorn[k];
     if (contactOf[k] != noContact) {
         const ContactPool& P = pool(contactOf[k]);
         const size_t s = slotOf(contactOf[k]);
@@ -298,6 +300,7 @@ bool InteractionContainer::append(id_t a, id_t b, Ptr I) {
     if (findIndex(a, b) >= 0) return false;
     const uint32_t k = (uint32_t)size();
     wasReal.push_back(I && I->isReal());
+    iterBorn.push_back(I && I->iterBorn >= 0 ? I->iterBorn : iterNow);
     recordOf.push_back(noRecord);
     contactOf.push_back(noContact);
     pairIds.push_back(a);
@@ -363,6 +366,7 @@ void InteractionContainer::eraseAt(size_t idx) {
         pairIds[2 * idx] = pairIds[2 * last];
         pairIds[2 * idx + 1] = pairIds[2 * last + 1];
         wasReal[idx] = wasReal[last];
+        iterBorn[idx] = iterBorn[last];
         relinkPartner(pairIds[2 * idx], (uint32_t)last, (uint32_t)idx);
         relinkPartner(pairIds[2 * idx + 1], (uint32_t)last, (uint32_t)idx);
     }
@@ -370,6 +374,7 @@ void InteractionContainer::eraseAt(size_t idx) {
     contactOf.pop_back();
     pairIds.resize(2 * last);
     wasReal.pop_back();
+    iterBorn.pop_back();
     ++changes;
 }
 
@@ -379,6 +384,7 @@ void InteractionContainer::reserve(size_t n) {
     contactOf.reserve(n);
     pairIds.reserve(2 * n);
     wasReal.reserve(n);
+    iterBorn.reserve(n);
 }
 
 void InteractionContainer::reservePartners(const std::vector<uint32_t>& more) {
@@ -402,6 +408,7 @@ void InteractionContainer::clear() {
     contactOf.clear();
     pairIds.clear();
     wasReal.clear();
+    iterBorn.clear();
     for (auto& p : partners) p.clear();
     ++changes;
 }

@@ -116,6 +116,8 @@ public:
     // potential pairs are skipped without reading anything else.
     std::vector<id_t> pairIds; // 2 per interaction
     std::vector<char> wasReal;
+    std::vector<long long> iterBorn; // the step each pair was added (Interaction.iterBorn)
+    long long iterNow = 0;           // the step new pairs are born in (set by Scene::beginStep)
     // Where a contact's record is: pool index (high bits) and slot, or noContact.
     static constexpr uint32_t noContact = 0xffffffffu, slotBits = 26, maxPools = 64;
     std::vector<uint32_t> contactOf;

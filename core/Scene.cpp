@@ -52,8 +52,9 @@ void Scene::setThreads(int n) {
 }
 
 void Scene::setDt(Real value) {
-    if (!std::isfinite(value) || value <= 0)
-        throw std::invalid_argument("O.dt must be positive and finite (got " + std::to_string(value) + ")");
+    // (0 is accepted, as in the reference: steps that advance nothing, e.g. to create contacts in place)
+    if (!std::isfinite(value) || value < 0)
+        throw std::invalid_argument("O.dt must be finite and not negative (got " + std::to_string(value) + ")");
     dt = value;
 }
 
@@ -76,6 +77,7 @@ void Scene::beginStep() {
     }
     forces.resize(bodies.size());
     interactions.resizeBodies(bodies.size());
+    interactions.iterNow = iter;
     if (trackEnergy) energy.resetInstantaneous();
     newContactBodies.clear();
     failedEngine.clear();

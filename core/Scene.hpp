@@ -18,6 +18,7 @@ public:
     ForceContainer forces;
     EnergyTracker energy;
     std::vector<std::shared_ptr<Material>> materials;
+    std::vector<std::shared_ptr<Serializable>> miscParams; // O.miscParams: objects saved with the scene
     long long iter = 0;
     long long stopAtIter = 0;
     Real stopAtTime = 0; // O.stopAtTime: when positive, the loop stops at the end of the step where time reaches it
@@ -74,7 +75,7 @@ public:
     const std::vector<std::shared_ptr<Engine>>& pendingEngines() const { return nextEngines; }
     // Takes effect at once, or at the end of the current step if the loop is inside a step.
     void setEngines(const std::vector<std::shared_ptr<Engine>>& e);
-    void setDt(Real value); // throws std::invalid_argument unless finite and positive
+    void setDt(Real value); // throws std::invalid_argument unless finite and >= 0
 
     Body::id_t appendBody(const std::shared_ptr<Body>& b);
     void eraseBody(Body::id_t id); // removes the body's interactions too

@@ -261,15 +261,17 @@ private:
             }
             case AttrKind::RealVector: {
                 const auto x = numbers(v.text, -1, where);
-                checkFlags(a, x.data(), nullptr, (int)x.size(), where);
-                *static_cast<std::vector<Real>*>(p) = x;
+                auto& dst = *static_cast<std::vector<Real>*>(p);
+                // (a list as long as the default one, e.g. the unset NaN vertices of Facet(), has its items as defaults)
+                checkFlags(a, x.data(), dst.size() == x.size() ? dst.data() : nullptr, (int)x.size(), where);
+                dst = x;
                 break;
             }
             case AttrKind::Vector3rVector: {
                 const auto x = numbers(v.text, -1, where);
                 if (x.size() % 3) throw FormatError(where + ": expected triplets of numbers");
-                checkFlags(a, x.data(), nullptr, (int)x.size(), where);
                 auto& dst = *static_cast<std::vector<Vector3r>*>(p);
+                checkFlags(a, x.data(), 3 * dst.size() == x.size() && !dst.empty() ? dst[0].data() : nullptr, (int)x.size(), where);
                 dst.clear();
                 for (size_t i = 0; i < x.size(); i += 3) dst.emplace_back(x[i], x[i + 1], x[i + 2]);
                 break;
@@ -344,6 +346,8 @@ Node SceneIO::toNode(Scene& s) {
     }
     Node& engines = sc.add("engines");
     for (const auto& e : s.getEngines()) engines.children.push_back(w.write(e));
+    Node& misc = sc.add("miscParams");
+    for (const auto& m : s.miscParams) misc.children.push_back(w.write(m));
     Node& perm = sc.add("permanentForces");
     for (size_t i = 0; s.forces.hasPermanent() && i < s.forces.size(); ++i) {
         const Vector3r &f = s.forces.getPermForce((int)i), &t = s.forces.getPermTorque((int)i);
@@ -402,6 +406,12 @@ std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
         engines.push_back(e);
     }
     s->setEngines(engines);
+    if (const Node* misc = sc.find("miscParams")) // (files written before it was saved lack it)
+        for (const Node& n : misc->children) {
+            auto m = readAs<Serializable>(r, n, "an object");
+            if (!m) throw FormatError("None in O.miscParams");
+            s->miscParams.push_back(m);
+        }
     for (const Node& n : sc.child("permanentForces").children) {
         const long id = std::stol(n.attr("id"));
         if (id < 0 || id >= (long)s->bodies.size()) throw FormatError("a permanent force refers to a body that does not exist");

@@ -1082,3 +1082,61 @@ def test_a_refused_assignment_does_not_make_the_scene_unloadable(tmp_path):
     O.save(path)
     O.load(path)
     assert O.bodies[0].shape.axis == 2
+
+
+# ------------------------------------------------------------------ O.miscParams
+
+def test_miscParams_saved_and_loaded_with_the_scene(tmp_path):
+    O.reset()
+    O.miscParams = [FrictMat(young=3e8, frictionAngle=0.25, label='kept'), yade.Sphere(radius=0.125)]
+    for name in ('a.yade', 'a.xml'):
+        O.save(str(tmp_path / name))
+        O.reset()
+        assert O.miscParams == []
+        O.load(str(tmp_path / name))
+        m, s = O.miscParams
+        assert (type(m).__name__, m.young, m.frictionAngle, m.label) == ('FrictMat', 3e8, 0.25, 'kept')
+        assert (type(s).__name__, s.radius) == ('Sphere', 0.125)
+    with pytest.raises(TypeError, match='not a Yade object'):
+        O.miscParams = [FrictMat(), 3]
+    assert len(O.miscParams) == 2  # (unchanged)
+
+
+def _plain(v):
+    """v with its objects as (class name, attributes), recursively, and NaN as a string (to compare)."""
+    if isinstance(v, yade.Serializable):
+        # (realLast: the wall-clock time of the last run, which a loaded PeriodicEngine counts from its load)
+        return (type(v).__name__, {k: _plain(x) for k, x in v.dict().items() if k != 'realLast'})
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    if isinstance(v, float) and math.isnan(v):
+        return 'nan'
+    if hasattr(v, '__len__') and not isinstance(v, (str, dict)):  # Vector3, Matrix3, Quaternion...
+        return [_plain(x) for x in v]
+    return v
+
+
+def test_every_class_saved_and_loaded_in_miscParams(tmp_path):
+    """As the reference's core.TestIO.testSaveAllClasses: an object of each class, as its constructor
+    makes it, is written and read back (binary and XML) with the same attributes."""
+    import yade.system
+    names = yade.system.childClasses('Serializable')
+    assert len(names) > 60
+    failed = []
+    for name in sorted(names):
+        O.reset()
+        obj = getattr(yade, name)()
+        O.miscParams = [obj]
+        for fmt in ('yade', 'xml'):
+            path = str(tmp_path / ('o.' + fmt))
+            try:
+                O.save(path)
+                O.load(path)
+            except (RuntimeError, ValueError) as e:
+                failed.append('%s (%s): %s' % (name, fmt, e))
+                continue
+            back = O.miscParams[0]
+            if _plain(back) != _plain(obj):
+                failed.append('%s (%s): %r != %r' % (name, fmt, _plain(back), _plain(obj)))
+    print('\n%d classes saved and loaded' % len(names))
+    assert failed == []

@@ -36,7 +36,7 @@ import yade
 from yade import (O, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ElastMat, ForceResetter, FrictMat, GlobalStiffnessTimeStepper,
                   GravityEngine, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InsertionSortCollider,
                   InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack,
-                  NewtonIntegrator, Sphere, State, StabilityError, Vector3)
+                  NewtonIntegrator, RotationEngine, Sphere, State, StabilityError, Vector3)
 from yade.utils import PWaveTimeStep, kineticEnergy, sphere, wall
 
 G = 9.81
@@ -752,7 +752,29 @@ def test_material_refuses_non_positive(cls, param, value):
     assert (m.density, m.young) == (2000, 1e7)
 
 
-@pytest.mark.parametrize('value', [0, NAN, INF, -INF])  # (-1: the time stepper, test_negative_dt_hands_the_step_to_the_time_stepper)
+def test_zero_dt_steps_in_place():
+    """O.dt = 0 is accepted, as in the reference (whose own utilsModule test steps with it to create
+    contacts without moving anything): the step finds contacts and computes forces, positions and
+    time stay; a RotationEngine turning around a point gives its bodies the limit velocity w x r."""
+    O.reset()
+    O.bodies.append([sphere((0, 0, 0), 0.5), sphere((0.99, 0, 0), 0.5), sphere((0, 0, 3), 0.5, fixed=True)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 RotationEngine(ids=[2], rotationAxis=(0, 1, 0), angularVelocity=2, rotateAroundZero=True, zeroPoint=(0, 0, 0)),
+                 NewtonIntegrator()]
+    O.dt = 0
+    assert O.dt == 0
+    O.step()
+    assert O.time == 0 and O.iter == 1
+    assert O.bodies[1].state.pos == Vector3(0.99, 0, 0)
+    i = O.interactions[0, 1]
+    assert i.isReal and i.geom.penetrationDepth == pytest.approx(0.01)
+    assert O.forces.f(0)[0] < 0 and O.forces.f(0)[0] == -O.forces.f(1)[0]
+    assert O.bodies[2].state.vel == Vector3(6, 0, 0)  # (0, 2, 0) x (0, 0, 3)
+    assert O.bodies[2].state.pos == Vector3(0, 0, 3)
+
+
+@pytest.mark.parametrize('value', [NAN, INF, -INF])  # (-1: the time stepper, test_negative_dt_hands_the_step_to_the_time_stepper)
 def test_dt_refused(value):
     O.dt = 1.5e-3
     with pytest.raises(ValueError, match='dt'):

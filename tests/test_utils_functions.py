@@ -7,7 +7,9 @@ import math
 
 import pytest
 
-from yade import O, utils, Vector3, Matrix3
+from yade import (O, utils, Vector3, Matrix3, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, ElastMat, ForceResetter, Ig2_Facet_Sphere_ScGeom,
+                  Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys,
+                  Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator)
 
 pytestmark = pytest.mark.usefixtures("fresh_scene")
 
@@ -161,3 +163,74 @@ def test_no_contacts():
     assert utils.getStress() == Matrix3.Zero
     with pytest.raises(RuntimeError):
         utils.fabricTensor()
+
+
+# ------------------------------------------------------------------ utils.createInteraction
+# The reference (Yade 2023.02a, yade-double -n -x) on CREATE_SCENE then the calls below printed:
+# createInteraction(0, 1) -> isReal True, iterBorn 1, iterMadeReal 1, penetrationDepth -1.0,
+# kn 5000000.0, countReal 2, len 4; after one step (dt = 0): the pair is kept, not real;
+# (0, 3) "Interaction #0+#3 already exists."; (0, 99) "No body #99"; no InteractionLoop:
+# "No IGeomDispatcher in engines or inside InteractionLoop."; (1, 4) penetrationDepth -7.0.
+CREATE_ENGINES = lambda: [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),  # noqa: E731
+                          InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                          [Law2_ScGeom_FrictPhys_CundallStrack()]), NewtonIntegrator()]
+
+
+def _create_scene():
+    O.engines = CREATE_ENGINES()
+    O.bodies.append([utils.sphere((0, 0, 0), .5), utils.sphere((2, 0, 0), .5), utils.sphere((0.9, 0.9, 0), .5),
+                     utils.sphere((-0.99, 0, 0), .5), utils.sphere((10, 0, 0), .5)])
+    O.dt = 0
+    O.step()
+
+
+def test_createInteraction_as_the_reference():
+    _create_scene()
+    assert (len(O.interactions), O.interactions.countReal()) == (3, 1)  # (0, 2), (1, 2) potential (bounds with the verlet distance), (0, 3) real
+    i = utils.createInteraction(0, 1)
+    assert i.isReal and (i.iterBorn, i.iterMadeReal) == (1, 1)
+    assert i.geom.penetrationDepth == pytest.approx(-1.0) and i.phys.kn == pytest.approx(5e6)
+    assert (O.interactions.countReal(), len(O.interactions)) == (2, 4)
+    j = utils.createInteraction(0, 2)  # a potential pair (its bounds overlap) becomes real
+    assert j.isReal and (j.iterBorn, j.iterMadeReal) == (1, 1)
+    assert j.geom.penetrationDepth == pytest.approx(1 - math.sqrt(2 * 0.9 ** 2))
+    assert (O.interactions.countReal(), len(O.interactions)) == (3, 4)
+    with pytest.raises(RuntimeError, match=r'Interaction #0\+#3 already exists'):
+        utils.createInteraction(0, 3)
+    with pytest.raises(RuntimeError, match='No body #99'):
+        utils.createInteraction(0, 99)
+    with pytest.raises(RuntimeError, match='same body'):
+        utils.createInteraction(0, 0)
+    O.step()  # the law ends contacts whose bodies are apart (negative penetration)
+    assert O.interactions.has(0, 1) and not O.interactions[0, 1].isReal
+    assert O.interactions[0, 3].isReal
+    k = utils.createInteraction(1, 4)
+    assert k.geom.penetrationDepth == pytest.approx(-7.0) and k.iterBorn == 2
+    O.dt = 1e-3
+    O.step()  # bodies apart: the law ends the contact (the reference's collider also drops the pair (0, 1) then;
+    # here the collider, which nothing moved, has not run: a potential pair stays until it does)
+    assert not O.interactions.has(0, 1, True) and not O.interactions.has(1, 4, True) and O.interactions.countReal() == 1
+
+
+def test_createInteraction_without_loop_virtual_and_swapped_functor(tmp_path):
+    _create_scene()
+    O.engines = []
+    with pytest.raises(RuntimeError, match='No IGeomDispatcher'):
+        utils.createInteraction(1, 4)
+    assert not O.interactions.has(1, 4)
+    O.engines = CREATE_ENGINES()
+    v = utils.createInteraction(1, 4, virtualI=True)
+    assert not v.isReal and v.iterBorn == 1 and O.interactions.has(1, 4) and not O.interactions.has(1, 4, True)
+    # a facet and a sphere given in the other order than Ig2_Facet_Sphere_ScGeom takes them
+    f = O.bodies.append(utils.facet([(-1, -1, -0.4), (3, -1, -0.4), (-1, 3, -0.4)]))
+    c = utils.createInteraction(0, f)
+    assert c.isReal and (c.id1, c.id2) == (f, 0) and c.geom.penetrationDepth == pytest.approx(0.1)
+    # iterBorn is kept in saved files
+    path = str(tmp_path / 's.yade')
+    O.save(path)
+    O.load(path)
+    assert O.interactions[f, 0].iterBorn == 1 and O.interactions[0, 3].iterBorn == 0
+    O.bodies.append(utils.sphere((20, 0, 0), 1, material=ElastMat()))  # no Ip2 functor for FrictMat+ElastMat
+    with pytest.raises(RuntimeError, match='no Ip2 functor'):
+        utils.createInteraction(4, len(O.bodies) - 1)
+    assert not O.interactions.has(4, len(O.bodies) - 1)

@@ -42,7 +42,9 @@ void InteractionLoop::checkFunctorChain() const {
 }
 
 void InteractionLoop::warnMissingIg2(const Shape& a, const Shape& b) {
-    const auto key = std::minmax(a.getClassIndex(), b.getClassIndex());
+    // (std::minmax of two temporaries returns references to them: the indices are copied first)
+    const int ia = a.getClassIndex(), ib = b.getClassIndex();
+    const std::pair<int, int> key(std::min(ia, ib), std::max(ia, ib));
     if (!warnedShapePairs.insert(key).second) return;
     logWarning("InteractionLoop: no Ig2 functor for " + a.getClassName() + "+" + b.getClassName()
             + " (an Ig2_" + a.getClassName() + "_" + b.getClassName() + "_* functor would handle them); such pairs are skipped");

@@ -20,7 +20,7 @@ void RotationEngine::apply(const std::vector<int>& bodyIds) {
         st.angVel() += omega;
         if (!rotateAroundZero) continue;
         const Vector3r r = st.pos() - zeroPoint;
-        st.vel() += (turn * r - r) / s.dt;
+        st.vel() += s.dt > 0 ? Vector3r((turn * r - r) / s.dt) : Vector3r(omega.cross(r)); // (O.dt = 0: the limit)
     }
 }
 

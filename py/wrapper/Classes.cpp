@@ -144,7 +144,7 @@ static void guardErasedInteractions(py::module_& m) {
         PyErr_SetString(PyExc_ReferenceError, message.c_str());
         throw py::error_already_set();
     };
-    for (const char* name : {"id1", "id2", "iterMadeReal", "cellDist", "geom", "phys", "isReal"}) {
+    for (const char* name : {"id1", "id2", "iterBorn", "iterMadeReal", "cellDist", "geom", "phys", "isReal"}) {
         py::object old = cls.attr("__dict__")[name];
         py::object fget = old.attr("fget"), fset = old.attr("fset");
         const std::string n = name;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <core/Functor.hpp>
 #include <core/SceneIO.hpp>
+#include <pkg/common/InteractionLoop.hpp>
 #include <pkg/dem/GlobalStiffnessTimeStepper.hpp>
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
@@ -278,6 +279,58 @@ struct InteractionContainerProxy {
     }
 };
 
+// utils.createInteraction: the pair (id1, id2) added by hand. Unless virtualI, its geometry is made
+// by the Ig2 functor of O.engines' InteractionLoop with force (so bodies apart get one too: a
+// negative penetration for spheres) and its physics by the Ip2 functor: a real contact from this
+// step on, which the loop then treats as any other (and may end at its next step if the bodies
+// are apart).
+static InteractionContainer::Ptr createInteraction(long id1, long id2, bool virtualI) {
+    Scene& s = scene();
+    const auto body = [&s](long id) -> const Body& {
+        if (id < 0 || id >= (long)s.bodies.size() || !s.bodies[(Body::id_t)id]) throw std::runtime_error("No body #" + std::to_string(id));
+        return *s.bodies[(Body::id_t)id];
+    };
+    const Body &b1 = body(id1), &b2 = body(id2);
+    if (id1 == id2) throw std::runtime_error("createInteraction: #" + std::to_string(id1) + " and #" + std::to_string(id2) + " are the same body");
+    BetweenSteps between;
+    const long existing = s.interactions.findIndex((Body::id_t)id1, (Body::id_t)id2);
+    if (existing >= 0 && s.interactions.isReal((size_t)existing)) // (a potential pair is replaced)
+        throw std::runtime_error("Interaction #" + std::to_string(id1) + "+#" + std::to_string(id2) + " already exists.");
+    InteractionLoop* loop = nullptr;
+    for (const auto& e : s.getEngines())
+        if ((loop = dynamic_cast<InteractionLoop*>(e.get()))) break;
+    if (!loop) throw std::runtime_error("No IGeomDispatcher in engines or inside InteractionLoop.");
+    if (!loop->geomDispatcher || !loop->physDispatcher)
+        throw std::runtime_error("createInteraction: the InteractionLoop's geomDispatcher and physDispatcher must not be None");
+    for (auto* d : std::initializer_list<Dispatcher*>{loop->geomDispatcher.get(), loop->physDispatcher.get()})
+        for (const auto& f : d->functorsBase()) { // (as the loop does before its pass)
+            f->scene = &s;
+            f->prepare();
+        }
+    auto I = std::make_shared<Interaction>((Body::id_t)id1, (Body::id_t)id2);
+    I->iterBorn = s.iter;
+    if (!virtualI) {
+        if (!b1.shape || !b2.shape) throw std::runtime_error("createInteraction: bodies #" + std::to_string(id1) + " and #" + std::to_string(id2) + " need shapes");
+        if (!b1.material || !b2.material) throw std::runtime_error("createInteraction: bodies #" + std::to_string(id1) + " and #" + std::to_string(id2) + " need materials");
+        const auto& geomEntry = loop->geomDispatcher->getFunctor(*b1.shape, *b2.shape);
+        if (!geomEntry.functor)
+            throw std::runtime_error("createInteraction: no Ig2 functor in the InteractionLoop for " + b1.shape->getClassName() + "+" + b2.shape->getClassName());
+        const Body &f1 = geomEntry.swap ? b2 : b1, &f2 = geomEntry.swap ? b1 : b2; // (in the functor's order)
+        if (geomEntry.swap) I->swapOrder();
+        if (!geomEntry.functor->go(*f1.shape, *f2.shape, *f1.state, *f2.state, Vector3r::Zero(), true, *I) || !I->geom)
+            throw std::runtime_error("createInteraction: " + geomEntry.functor->getClassName() + " made no geometry for #" + std::to_string(id1) + "+#" + std::to_string(id2));
+        const auto& physEntry = loop->physDispatcher->getFunctor(*b1.material, *b2.material);
+        if (!physEntry.functor)
+            throw std::runtime_error("createInteraction: no Ip2 functor in the InteractionLoop for " + b1.material->getClassName() + "+" + b2.material->getClassName());
+        physEntry.functor->go(f1.material, f2.material, *I); // (as the loop calls it)
+        if (!I->phys) throw std::runtime_error("createInteraction: " + physEntry.functor->getClassName() + " made no physics for #" + std::to_string(id1) + "+#" + std::to_string(id2));
+        I->iterMadeReal = s.iter;
+    }
+    if (existing >= 0) s.interactions.eraseAt((size_t)existing);
+    s.interactions.insert(I);
+    return s.interactions.find((Body::id_t)id1, (Body::id_t)id2);
+}
+
 void checkBodyId(long id) {
     if (id < 0 || id >= (long)scene().bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
     scene().forces.resize(scene().bodies.size());
@@ -450,6 +503,10 @@ void waitInterruptibly() {
 } // namespace
 
 void bindOmega(py::module_& m) {
+    m.def("createInteraction", &createInteraction, py::arg("id1"), py::arg("id2"), py::arg("virtualI") = false,
+            "Create the interaction of bodies id1 and id2 by hand: its geometry from the Ig2 functor of O.engines' InteractionLoop, "
+            "made even if the bodies do not touch, and its physics from the Ip2 functor (virtualI=True: a potential pair only). "
+            "RuntimeError if a body is missing, the pair exists, or the loop has no functor for it.");
     py::class_<BodyContainerProxy>(m, "BodyContainer", "O.bodies: bodies indexed by id")
             .def("append", &BodyContainerProxy::append, py::arg("body"), "Append a Body (returns its id) or a list of bodies (returns their ids)")
             .def("__getitem__", &BodyContainerProxy::get)
@@ -535,6 +592,17 @@ void bindOmega(py::module_& m) {
             .def_property("timingEnabled", [](OmegaProxy&) { return Scene::timingEnabled; },
                     [](OmegaProxy&, bool v) { Scene::timingEnabled = v; },
                     "Whether engines accumulate execTime/execCount (yade.timing.stats() prints them)")
+            .def_property("miscParams", [](OmegaProxy&) { return scene().miscParams; },
+                    [](OmegaProxy&, py::object list) {
+                        if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.miscParams must be a list of Yade objects");
+                        std::vector<std::shared_ptr<Serializable>> objects;
+                        for (py::handle h : list) {
+                            if (!py::isinstance<Serializable>(h))
+                                throw py::type_error("O.miscParams: " + std::string(py::str(py::repr(h))) + " is not a Yade object (Serializable)");
+                            objects.push_back(py::cast<std::shared_ptr<Serializable>>(h));
+                        }
+                        scene().miscParams = objects;
+                    }, "Objects of any Yade class saved and loaded with the simulation (e.g. parameters a script reads back)")
             .def_property("engines", [](OmegaProxy&) { return scene().getEngines(); },
                     [](OmegaProxy&, py::object list) {
                         if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.engines must be a list of engines");

@@ -4,6 +4,7 @@ import random
 
 from ._yade import O, Body, Sphere, Facet, Wall, Box, Aabb, State, FrictMat, Material, Vector3, Quaternion
 from ._yade import PWaveTimeStep, unbalancedForce, kineticEnergy, getSpheresVolume, getSpheresMass, Matrix3
+from ._yade import createInteraction  # noqa: F401 (a utils function written in C++)
 
 __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMaterial', 'randomColor', 'PWaveTimeStep',
            'unbalancedForce', 'kineticEnergy', 'getSpheresVolume', 'aabbExtrema', 'avgNumInteractions', 'porosity',
