@@ -464,3 +464,18 @@ def test_numpy():
     assert Vector3(numpy.array([1.5, 2, 3])) == Vector3(1.5, 2, 3)
     assert Vector3i(numpy.array([1, 2, 3])) == Vector3i(1, 2, 3)
     assert Vector3(*numpy.array([1.0, 2.0, 3.0])) == Vector3(1, 2, 3)
+
+
+def test_quaternion_setFromTwoVectors_in_place():
+    """As minieigen's (reference figures, Yade 2023.02a): returns None, changes q, leaves Identity alone."""
+    q = Quaternion.Identity
+    assert q.setFromTwoVectors(Vector3(1, 2, 3), Vector3(2, 3, 4)) is None
+    axis, angle = q.toAxisAngle()
+    assert angle == pytest.approx(0.12186756768575521, rel=1e-14)
+    assert list(axis) == pytest.approx([-0.4082482904638629, 0.8164965809277263, -0.4082482904638629], rel=1e-14)
+    assert q.norm() == pytest.approx(1, abs=1e-15)
+    turned = q * Vector3(1, 2, 3)
+    assert list(turned.normalized()) == pytest.approx(list(Vector3(2, 3, 4).normalized()), abs=1e-15)
+    assert Quaternion.Identity == Quaternion((1, 0, 0), 0)
+    q.setFromTwoVectors(Vector3(1, 0, 0), Vector3(0, 1, 0))
+    assert q.toAxisAngle()[1] == pytest.approx(math.pi / 2) and list(q.toAxisAngle()[0]) == pytest.approx([0, 0, 1])

@@ -427,6 +427,8 @@ namespace {
 		        .def("norm", [](const Q& q) { return q.norm(); })
 		        .def("squaredNorm", [](const Q& q) { return q.squaredNorm(); })
 		        .def("normalize", [](Q& q) { noteExternalWrite(); q.normalize(); })
+		        .def("setFromTwoVectors", [](Q& q, const Vector3r& a, const Vector3r& b) { noteExternalWrite(); q.setFromTwoVectors(a, b); },
+		             py::arg("u"), py::arg("v"), "Set in place to the rotation that turns the direction of u into that of v")
 		        .def("normalized", [](const Q& q) -> Q { return q.normalized(); })
 		        .def("dot", [](const Q& a, const Q& b) { return a.dot(b); }, py::arg("other"))
 		        .def("angularDistance", [](const Q& a, const Q& b) { return a.angularDistance(b); }, py::arg("other"))
