@@ -414,3 +414,32 @@ def test_dyndt_can_be_set_as_in_the_reference(fresh_scene):
     assert O.dynDt is True and O.engines[1].active
     O.dynDt = False
     assert O.dynDt is False and not O.engines[1].active
+
+
+# ------------------------------------------------------------------ O.forces during a background run
+
+def test_forces_read_and_added_while_running_in_the_background(y):
+    """O.forces.f/t/addF/permF from the main thread while O.run() runs: each call waits for the end of
+    a step (no data race with the loop's threads, which ThreadSanitizer checks in the tsan stage) and
+    the run goes on; a permanent force added then acts from the next step on."""
+    O = y.O
+    falling_sphere(y, [y.ForceResetter(), y.NewtonIntegrator(gravity=(0, 0, 0), damping=0)])
+    O.bodies.append(y.utils.sphere((5, 0, 0), 1))
+    m = O.bodies[0].state.mass
+    O.run()
+    try:
+        seen = [tuple(O.forces.f(0)) + tuple(O.forces.t(1)) for _ in range(200)]
+        assert O.running
+        O.forces.addF(0, (m, 0, 0), permanent=True)  # an acceleration of 1 m/s² from the next step
+        it0 = O.iter
+        assert tuple(O.forces.permF(0)) == (m, 0, 0)
+        while O.iter < it0 + 50:
+            O.forces.f(1)
+            time.sleep(0.001)
+    finally:
+        O.pause()
+    assert set(seen) == {(0, 0, 0, 0, 0, 0)}
+    steps = O.iter - it0  # (the force acts in the steps after it was added: one of them may already have begun)
+    v = O.bodies[0].state.vel[0]
+    assert v == pytest.approx(steps * O.dt, rel=1e-12) or v == pytest.approx((steps - 1) * O.dt, rel=1e-12)
+    assert O.bodies[1].state.vel == y.Vector3(0, 0, 0)

@@ -336,21 +336,27 @@ void checkBodyId(long id) {
     scene().forces.resize(scene().bodies.size());
 }
 
+// O.forces from Python. While O.run() runs in the background, each call waits for the end of the
+// current step and lets the run go on afterwards (BetweenSteps): reading a total syncs the per-thread
+// lists and adding writes to them, which the loop's threads do at the same time (a data race). From a
+// PyRunner (inside the loop, between two engines) the calls act at once.
 struct ForceContainerProxy {
-    Vector3r f(long id, bool) { checkBodyId(id); return scene().forces.getForce((int)id); }
-    Vector3r t(long id, bool) { checkBodyId(id); return scene().forces.getTorque((int)id); }
+    Vector3r f(long id, bool) { BetweenSteps between; checkBodyId(id); return scene().forces.getForce((int)id); }
+    Vector3r t(long id, bool) { BetweenSteps between; checkBodyId(id); return scene().forces.getTorque((int)id); }
     void addF(long id, const Vector3r& v, bool permanent) {
-        checkBodyId(id);
         if (!isFinite(v)) throw py::value_error("O.forces.addF: force must be finite");
+        BetweenSteps between;
+        checkBodyId(id);
         permanent ? scene().forces.addPermForce((int)id, v) : scene().forces.addForce((int)id, v);
     }
     void addT(long id, const Vector3r& v, bool permanent) {
-        checkBodyId(id);
         if (!isFinite(v)) throw py::value_error("O.forces.addT: torque must be finite");
+        BetweenSteps between;
+        checkBodyId(id);
         permanent ? scene().forces.addPermTorque((int)id, v) : scene().forces.addTorque((int)id, v);
     }
-    Vector3r permF(long id) { checkBodyId(id); return scene().forces.getPermForce((int)id); }
-    Vector3r permT(long id) { checkBodyId(id); return scene().forces.getPermTorque((int)id); }
+    Vector3r permF(long id) { BetweenSteps between; checkBodyId(id); return scene().forces.getPermForce((int)id); }
+    Vector3r permT(long id) { BetweenSteps between; checkBodyId(id); return scene().forces.getPermTorque((int)id); }
 };
 
 struct MaterialContainerProxy {
