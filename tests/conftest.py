@@ -14,3 +14,20 @@ def fresh_scene():
     O.pause()
     setNumThreads(1)
     O.reset()
+
+
+# The fuzz harnesses record their case counts (record_property 'fuzz_*'): printed at the end of the
+# run, also without -s, so that the CI log shows how many cases each harness ran.
+_fuzz_counts = []
+
+
+def pytest_runtest_logreport(report):
+    if report.when == 'call':
+        _fuzz_counts.extend((report.nodeid, k, v) for k, v in report.user_properties if k.startswith('fuzz_'))
+
+
+def pytest_terminal_summary(terminalreporter):
+    if _fuzz_counts:
+        terminalreporter.section('fuzz harnesses')
+        for nodeid, key, value in _fuzz_counts:
+            terminalreporter.write_line('%s: %s = %s' % (nodeid.split('::')[0], key, value))
