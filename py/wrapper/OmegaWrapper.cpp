@@ -204,6 +204,7 @@ struct RealInteractionIterator {
     // next is asked for: `for i in O.interactions` rebinds i after __next__ returns).
     std::shared_ptr<Interaction> made[2];
     py::object step() {
+        BetweenSteps between; // (see InteractionContainerProxy)
         Scene& s = scene();
         InteractionContainer& intrs = s.interactions;
         if (made[0]) {
@@ -226,6 +227,9 @@ struct RealInteractionIterator {
     }
 };
 
+// O.interactions from Python. While O.run() runs in the background, each call waits for the end of
+// the current step and lets the run go on afterwards (BetweenSteps): the loop adds and removes
+// pairs (its columns may move in memory) and a read from Python may make a pair's object.
 struct InteractionContainerProxy {
     py::object get(py::tuple ids) {
         if (ids.size() != 2) throw py::type_error("O.interactions[id1,id2] takes two body ids");
@@ -238,17 +242,23 @@ struct InteractionContainerProxy {
         } catch (py::cast_error&) { // beyond the range of an int: no body has that id
             throw py::index_error("No such interaction: ##" + std::string(py::str(ids[0])) + "+" + std::string(py::str(ids[1])));
         }
+        BetweenSteps between;
         const auto& I = scene().interactions.find(id1, id2);
         if (!I) throw py::index_error("No such interaction: ##" + std::string(py::str(ids[0])) + "+" + std::string(py::str(ids[1])));
         return py::cast(I);
     }
     bool has(int a, int b, bool onlyReal) {
+        BetweenSteps between;
         const InteractionContainer& intrs = scene().interactions;
         const long k = intrs.findIndex(a, b);
         return k >= 0 && (!onlyReal || intrs.isReal((size_t)k));
     }
-    size_t len() { return scene().interactions.size(); }
+    size_t len() {
+        BetweenSteps between;
+        return scene().interactions.size();
+    }
     py::list all(bool onlyReal) {
+        BetweenSteps between;
         py::list l;
         const InteractionContainer& intrs = scene().interactions;
         for (size_t k = 0; k < intrs.size(); ++k)
@@ -256,18 +266,21 @@ struct InteractionContainerProxy {
         return l;
     }
     py::list withBody(int id) {
+        BetweenSteps between;
         py::list l;
         for (const auto& I : scene().interactions.withBody(id))
             if (I->isReal()) l.append(py::cast(I));
         return l;
     }
     py::list withBodyAll(int id) { // (potential pairs too)
+        BetweenSteps between;
         py::list l;
         InteractionContainer& intrs = scene().interactions;
         for (const auto& p : intrs.partnersOf(id)) l.append(py::cast(intrs[p.k]));
         return l;
     }
     py::object nth(long n) {
+        BetweenSteps between;
         InteractionContainer& intrs = scene().interactions;
         if (n < 0) n += (long)intrs.size();
         if (n < 0 || n >= (long)intrs.size()) throw py::index_error("O.interactions.nth(" + std::to_string(n) + "): there are " + std::to_string(intrs.size()) + " interactions");
@@ -532,6 +545,7 @@ void bindOmega(py::module_& m) {
             .def("__len__", &InteractionContainerProxy::len)
             .def("__iter__",
                     [](InteractionContainerProxy&) {
+                        BetweenSteps between;
                         const InteractionContainer& intrs = scene().interactions;
                         RealInteractionIterator it;
                         it.serial = scene().serial;
@@ -545,7 +559,10 @@ void bindOmega(py::module_& m) {
             .def("withBody", &InteractionContainerProxy::withBody, py::arg("id"), "Real interactions of body #id")
             .def("withBodyAll", &InteractionContainerProxy::withBodyAll, py::arg("id"), "All interactions of body #id, potential ones (bounds overlapping, no contact) too")
             .def("nth", &InteractionContainerProxy::nth, py::arg("n"), "The n-th interaction of the container (in its own order, real or potential)")
-            .def("countReal", [](InteractionContainerProxy&) { return scene().interactions.countReal(); })
+            .def("countReal", [](InteractionContainerProxy&) {
+                BetweenSteps between;
+                return scene().interactions.countReal();
+            })
             .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"))
             .def("clear", [](InteractionContainerProxy&) {
                 BetweenSteps between;
