@@ -344,6 +344,18 @@ static InteractionContainer::Ptr createInteraction(long id1, long id2, bool virt
     return s.interactions.find((Body::id_t)id1, (Body::id_t)id2);
 }
 
+// The items of a Python list that must all be of class T (O.engines, O.miscParams); TypeError for
+// anything else, naming the first item that is not a T.
+template <class T> std::vector<std::shared_ptr<T>> listOf(py::object list, const std::string& name, const std::string& aList, const std::string& aT) {
+    if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error(name + " must be " + aList);
+    std::vector<std::shared_ptr<T>> items;
+    for (py::handle h : list) {
+        if (!py::isinstance<T>(h)) throw py::type_error(name + ": " + std::string(py::str(py::repr(h))) + " is not " + aT);
+        items.push_back(py::cast<std::shared_ptr<T>>(h));
+    }
+    return items;
+}
+
 void checkBodyId(long id) {
     if (id < 0 || id >= (long)scene().bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
     scene().forces.resize(scene().bodies.size());
@@ -617,24 +629,11 @@ void bindOmega(py::module_& m) {
                     "Whether engines accumulate execTime/execCount (yade.timing.stats() prints them)")
             .def_property("miscParams", [](OmegaProxy&) { return scene().miscParams; },
                     [](OmegaProxy&, py::object list) {
-                        if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.miscParams must be a list of Yade objects");
-                        std::vector<std::shared_ptr<Serializable>> objects;
-                        for (py::handle h : list) {
-                            if (!py::isinstance<Serializable>(h))
-                                throw py::type_error("O.miscParams: " + std::string(py::str(py::repr(h))) + " is not a Yade object (Serializable)");
-                            objects.push_back(py::cast<std::shared_ptr<Serializable>>(h));
-                        }
-                        scene().miscParams = objects;
+                        scene().miscParams = listOf<Serializable>(list, "O.miscParams", "a list of Yade objects", "a Yade object (Serializable)");
                     }, "Objects of any Yade class saved and loaded with the simulation (e.g. parameters a script reads back)")
             .def_property("engines", [](OmegaProxy&) { return scene().getEngines(); },
                     [](OmegaProxy&, py::object list) {
-                        if (!py::isinstance<py::sequence>(list) || py::isinstance<py::str>(list)) throw py::type_error("O.engines must be a list of engines");
-                        std::vector<std::shared_ptr<Engine>> engines;
-                        for (py::handle h : list) {
-                            if (!py::isinstance<Engine>(h))
-                                throw py::type_error("O.engines: " + std::string(py::str(py::repr(h))) + " is not an Engine");
-                            engines.push_back(py::cast<std::shared_ptr<Engine>>(h));
-                        }
+                        const auto engines = listOf<Engine>(list, "O.engines", "a list of engines", "an Engine");
                         scene().setEngines(engines);
                         injectLabels(engines);
                     }, "The simulation loop: engines run in this order every step")
