@@ -85,11 +85,13 @@ void Scene::beginStep() {
 
 void Scene::runEngine(Engine& e) {
     e.scene = this;
+    failedEngine.clear();
     try {
         if (e.dead || !e.isActivated()) return;
         runEngineAction(e);
     } catch (...) {
-        failedEngine = e.getClassName() + (e.label.empty() ? std::string() : " labeled '" + e.label + "'");
+        if (failedEngine.empty()) // (not set by an engine this one ran)
+            failedEngine = e.getClassName() + (e.label.empty() ? std::string() : " labeled '" + e.label + "'");
         throw;
     }
 }

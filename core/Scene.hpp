@@ -85,13 +85,15 @@ public:
     // The engine whose action threw last, as "Class labeled 'label'" (empty if none has thrown):
     // the loop names it when an error stops a run.
     std::string failedEngine;
+    // Runs e unless dead or not activated; if it throws, records failedEngine (the innermost engine
+    // that threw, when one engine runs others: ParallelEngine) and rethrows.
+    void runEngine(Engine& e);
 
 private:
     std::vector<std::shared_ptr<Engine>> engines, nextEngines;
     bool hasNextEngines = false, inStep = false;
     std::mutex enginesMutex;
     void beginStep();
-    void runEngine(Engine& e);       // (records failedEngine if it throws)
     void runEngineAction(Engine& e); // (timed while timingEnabled)
     void leaveStep(); // inStep off; an O.engines assigned during the step takes effect
 };

@@ -226,6 +226,41 @@ static void bindExtras(py::module_& m) {
         setFunctors(*loop.lawDispatcher, a[2], "InteractionLoop, third list (Law2 functors)");
         loop.checkFunctorChain();
     };
+    // ParallelEngine.slaves: a list whose items are an engine (a group of one) or a list of engines
+    const auto toGroups = [](py::handle list) {
+        if (!py::isinstance<py::list>(list) && !py::isinstance<py::tuple>(list))
+            throw py::type_error("ParallelEngine.slaves: expected a list of engines or lists of engines, got " + std::string(py::repr(list)));
+        std::vector<std::vector<std::shared_ptr<Engine>>> groups;
+        for (py::handle item : list) {
+            std::vector<std::shared_ptr<Engine>> group;
+            const bool many = py::isinstance<py::list>(item) || py::isinstance<py::tuple>(item);
+            for (py::handle e : many ? py::reinterpret_borrow<py::iterable>(item) : py::reinterpret_borrow<py::iterable>(py::make_tuple(item))) {
+                if (!py::isinstance<Engine>(e))
+                    throw py::type_error("ParallelEngine.slaves: " + std::string(py::repr(e)) + " is not an engine");
+                group.push_back(py::cast<std::shared_ptr<Engine>>(e));
+            }
+            groups.push_back(std::move(group));
+        }
+        return groups;
+    };
+    ctorArgHandlers()["ParallelEngine"] = [toGroups](Serializable& s, py::args a) {
+        if (a.size() != 1) throw py::type_error("ParallelEngine takes one positional argument: the list of its slaves ([engine, [engine, engine], ...])");
+        static_cast<ParallelEngine&>(s).setSlaves(toGroups(a[0]));
+    };
+    existing<ParallelEngine, Engine>().def_property("slaves",
+            [](const ParallelEngine& pe) {
+                py::list r;
+                for (const auto& group : pe.slaves()) {
+                    if (group.size() == 1) r.append(py::cast(group[0]));
+                    else r.append(py::cast(group));
+                }
+                return r;
+            },
+            [toGroups](ParallelEngine& pe, py::object v) {
+                noteExternalWrite();
+                pe.setSlaves(toGroups(v));
+            },
+            "The groups of engines: each item an engine (a group of one) or a list of engines run in that order");
     ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<LawDispatcher&>(s), a, "LawDispatcher"); };
 
     existing<BoundDispatcher, Dispatcher>().def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) {
