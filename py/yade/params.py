@@ -33,7 +33,6 @@ import warnings
 __all__ = ['readParamsFromTable', 'waitIfBatch', 'inBatch', 'batchTableLine']
 
 _BATCH_ENV = 'YADE_BATCH'
-_tableMade = False
 
 
 def batchTableLine():
@@ -112,20 +111,28 @@ def _setTag(O, key, value):
         pass
 
 
-def _makeTableModule(values):
-    """Create yade.params.table (a new module) holding values (a dict, in order)."""
-    global _tableMade
-    name = __name__ + '.table'
-    if _tableMade:
+def _paramsModule(mark, values):
+    """The module yade.params.<mark>, made anew, holding values (a dict, in order); with mark '' the
+    values go into yade.params itself (utils.saveVars, utils.loadVars, readParamsFromTable)."""
+    if not mark:
+        globals().update(values)
+        return sys.modules[__name__]
+    name = __name__ + '.' + mark
+    if name in sys.modules:
         warnings.warn('Overwriting %s which already exists.' % name)
     mod = types.ModuleType(name)
-    mod.__doc__ = 'Parameters of this simulation, set by readParamsFromTable.'
     for k, v in values.items():
         setattr(mod, k, v)
     mod.__all__ = list(values.keys())
     sys.modules[name] = mod
-    globals()['table'] = mod
-    _tableMade = True
+    globals()[mark] = mod
+    return mod
+
+
+def _makeTableModule(values):
+    """Create yade.params.table (a new module) holding values (a dict, in order)."""
+    mod = _paramsModule('table', values)
+    mod.__doc__ = 'Parameters of this simulation, set by readParamsFromTable.'
     return mod
 
 

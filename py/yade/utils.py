@@ -554,5 +554,177 @@ def replaceCollider(colliderEngine):
     raise RuntimeError('replaceCollider: no collider in O.engines')
 
 
+# --- time steps, growing particles, friction, small helpers (the reference's utils functions) ---------
+
+def SpherePWaveTimeStep(radius, density, young):
+    """P-wave critical time step of one (representative) sphere: radius / sqrt(young / density)."""
+    return radius / math.sqrt(young / density)
+
+
+def RayleighWaveTimeStep():
+    """Rayleigh-wave critical time step: the smallest over spheres of pi·r / (0.1631·nu + 0.876605) · sqrt(rho/G),
+    G = E / (2·(1 + nu)), from each sphere's elastic material (inf without spheres)."""
+    dt = float('inf')
+    for b in O.bodies:
+        m = b.material
+        if not isinstance(b.shape, Sphere) or not hasattr(m, 'poisson'):
+            continue
+        G = m.young / (2 * (1 + m.poisson))
+        dt = min(dt, math.pi * b.shape.radius / (0.1631 * m.poisson + 0.876605) * math.sqrt(m.density / G))  # (the reference's bits)
+    return dt
+
+
+def _grow(b, multiplier, updateMass):
+    b.shape.radius *= multiplier
+    if updateMass:
+        b.state.mass *= multiplier ** 3
+        b.state.inertia *= multiplier ** 5
+
+
+def _growRefRadii(grown, multiplier):
+    """The reference radii of the real contacts of the bodies in `grown` (a set of ids)."""
+    for i in O.interactions:
+        if i.isReal and hasattr(i.geom, 'refR1'):
+            if i.id1 in grown:
+                i.geom.refR1 *= multiplier
+            if i.id2 in grown:
+                i.geom.refR2 *= multiplier
+
+
+def growParticles(multiplier, updateMass=True, dynamicOnly=True):
+    """Multiply the radius of every sphere (only dynamic ones with dynamicOnly) by `multiplier`, with their
+    mass (multiplier^3) and inertia (multiplier^5) if updateMass, and the reference radii of their contacts."""
+    grown = set()
+    for b in O.bodies:
+        if isinstance(b.shape, Sphere) and (b.dynamic or not dynamicOnly):
+            _grow(b, multiplier, updateMass)
+            grown.add(b.id)
+    _growRefRadii(grown, multiplier)
+
+
+def growParticle(bodyID, multiplier, updateMass=True):
+    """growParticles for the one sphere `bodyID` (dynamic or not)."""
+    b = O.bodies[bodyID]
+    if b is None or not isinstance(b.shape, Sphere):
+        raise TypeError('growParticle: body #%d is not a sphere' % bodyID)
+    _grow(b, multiplier, updateMass)
+    _growRefRadii({bodyID}, multiplier)
+
+
+def setContactFriction(angleRad):
+    """Set the friction angle of the materials of dynamic bodies to angleRad, and the friction of every real
+    contact to tan(min) of its two bodies' friction angles."""
+    for b in O.bodies:
+        if b.dynamic and hasattr(b.material, 'frictionAngle'):
+            b.material.frictionAngle = angleRad
+    for i in O.interactions:
+        if i.isReal and hasattr(i.phys, 'tangensOfFrictionAngle'):
+            m1, m2 = O.bodies[i.id1].material, O.bodies[i.id2].material
+            i.phys.tangensOfFrictionAngle = math.tan(min(m1.frictionAngle, m2.frictionAngle))
+
+
+def sumFacetNormalForces(ids, axis=-1):
+    """Sum over facets `ids` of their force (O.forces) dotted with their normal; with axis 0, 1 or 2, that
+    component of the force is left out first."""
+    total = 0.
+    for i in ids:
+        f = O.bodies[i].shape if O.bodies[i] is not None else None
+        if not isinstance(f, Facet):
+            raise TypeError('sumFacetNormalForces: body #%d is not a facet' % i)
+        force = Vector3(O.forces.f(i))
+        if axis >= 0:
+            force[axis] = 0
+        total += force.dot(f.normal)
+    return total
+
+
+def negPosExtremeIds(axis, distFactor):
+    """Ids of the spheres at the two ends of the spheres' box along `axis`: ([those with
+    pos - distFactor·r <= min], [those with pos + distFactor·r >= max])."""
+    lo, hi = aabbExtrema()
+    neg, pos = [], []
+    for b in O.bodies:
+        if isinstance(b.shape, Sphere):
+            if b.state.pos[axis] - b.shape.radius * distFactor <= lo[axis]:
+                neg.append(b.id)
+            if b.state.pos[axis] + b.shape.radius * distFactor >= hi[axis]:
+                pos.append(b.id)
+    return (neg, pos)
+
+
+def cart2spher(vec):
+    """Spherical coordinates (r, theta from +z, phi from +x in the xy plane) of a Cartesian vector."""
+    r = Vector3(vec).norm()
+    if r == 0:
+        raise ValueError('cart2spher: the zero vector has no direction')
+    return Vector3(r, math.acos(vec[2] / r), math.atan2(vec[1], vec[0]))
+
+
+def spher2cart(vec):
+    """Cartesian coordinates of spherical (r, theta, phi), theta from +z in [0, pi]."""
+    r, theta, phi = vec[0], vec[1], vec[2]
+    if not 0 <= theta <= math.pi:
+        import warnings
+        warnings.warn('Spherical theta has to be between 0 and pi, passing %s is impossible' % theta, RuntimeWarning)
+    return Vector3(r * math.sin(theta) * math.cos(phi), r * math.sin(theta) * math.sin(phi), r * math.cos(theta))
+
+
+def fractionalBox(fraction=1.0, minMax=None):
+    """(min, max) of the box minMax (default: aabbExtrema()) shrunk about its center to `fraction` of its size."""
+    lo, hi = minMax if minMax is not None else aabbExtrema()
+    d = (1 - fraction) / 2.
+    return (tuple(lo[i] + d * (hi[i] - lo[i]) for i in range(3)), tuple(hi[i] - d * (hi[i] - lo[i]) for i in range(3)))
+
+
+def scalarOnColorScale(x, xmin=0, xmax=1):
+    """Color (RGB) of x on a blue-cyan-green-yellow-red scale from xmin to xmax (clamped at both ends)."""
+    t = min(1., max(0., (x - xmin) / (xmax - xmin)))
+    if t < .25:
+        return Vector3(0, 4 * t, 1)
+    if t < .5:
+        return Vector3(0, 1, 1 - 4 * (t - .25))
+    if t < .75:
+        return Vector3(4 * (t - .5), 1, 0)
+    return Vector3(1, 1 - 4 * (t - .75), 0)
+
+
+def randomOrientation():
+    """A random orientation, uniformly distributed (a unit quaternion from three uniform numbers)."""
+    u1, u2, u3 = random.random(), random.random(), random.random()
+    a, b = math.sqrt(1 - u1), math.sqrt(u1)
+    return Quaternion(b * math.cos(2 * math.pi * u3), a * math.sin(2 * math.pi * u2), a * math.cos(2 * math.pi * u2),
+                      b * math.sin(2 * math.pi * u3))
+
+
+_VARS_TAG = 'pickledPythonVariablesDictionary'
+
+
+def saveVars(mark='', loadNow=True, **kw):
+    """Save the keyword arguments inside the simulation (O.tags, saved with it); loadVars(mark) makes them
+    the module yade.params.<mark> (yade.params itself for mark ''), at once with loadNow."""
+    import pickle
+    O.tags[_VARS_TAG + mark] = pickle.dumps(kw, protocol=0).decode('latin-1')
+    if loadNow:
+        loadVars(mark)
+
+
+def loadVars(mark=None):
+    """Load the variables of saveVars(mark) (of every mark if None) into yade.params.<mark>."""
+    import pickle
+    from . import params
+    if mark is None:
+        marks = [k[len(_VARS_TAG):] for k in O.tags.keys() if k.startswith(_VARS_TAG)]
+    else:
+        if _VARS_TAG + mark not in O.tags.keys():
+            raise KeyError('Invalid key: %s.' % (_VARS_TAG + mark))
+        marks = [mark]
+    for m in marks:
+        params._paramsModule(m, pickle.loads(O.tags[_VARS_TAG + m].encode('latin-1')))
+
+
+__all__ += ['SpherePWaveTimeStep', 'RayleighWaveTimeStep', 'growParticles', 'growParticle', 'setContactFriction',
+            'sumFacetNormalForces', 'negPosExtremeIds', 'cart2spher', 'spher2cart', 'fractionalBox', 'scalarOnColorScale',
+            'randomOrientation', 'saveVars', 'loadVars']
+
 from .params import readParamsFromTable, waitIfBatch  # noqa: E402
 __all__ += ['readParamsFromTable', 'waitIfBatch']
