@@ -1,7 +1,7 @@
 """More functions of the reference's yade.utils: critical time steps (SpherePWaveTimeStep,
 RayleighWaveTimeStep), growing particles (growParticle, growParticles), setContactFriction,
 sumFacetNormalForces, negPosExtremeIds, cart2spher/spher2cart, fractionalBox, scalarOnColorScale,
-randomOrientation, saveVars/loadVars.
+randomOrientation, saveVars/loadVars, perpendicularArea, getSpheresVolume2D, getTotalDynamicStress.
 
 Constants named REF_* were printed by the reference Yade 2023.02a (`yade -n -x probe.py`) for the
 same scene and calls as the test that uses them (repr of each number)."""
@@ -189,3 +189,24 @@ def test_save_vars_travel_with_the_simulation(tmp_path):
         warnings.simplefilter("error")
         utils.saveVars('fresh', d={'x': 'ü'})
     assert sys.modules['yade.params.fresh'].d == {'x': 'ü'}
+
+
+# --- areas and the dynamic stress ---------------------------------------------------------------------------
+
+def test_areas_and_dynamic_stress_as_the_reference():
+    O.bodies.append([utils.sphere((0, 0, 0), 1), utils.sphere((3, 1, 0.5), 0.5, fixed=True), utils.sphere((-1, 2, 4), 0.7),
+                     utils.facet([(-5, -5, 0), (5, -5, 0), (0, 5, 0)])])
+    O.bodies[0].state.vel = (1, -2, 0.5)
+    O.bodies[2].state.vel = (0.3, 0.1, -4)
+    O.bodies[1].state.vel = (7, 0, 0)
+    O.bodies[2].mask = 4
+    # the spheres' box (facets left out), face by face
+    assert [utils.perpendicularArea(a) for a in range(3)] == [21.090000000000003, 29.64, 19.240000000000002]  # REF
+    assert [utils.getSpheresVolume2D(m) for m in (-1, 1, 4, 5, 2)] == \
+        [5.466371217246239, 3.9269908169872414, 1.5393804002589984, 5.466371217246239, 0.0]  # REF
+    REF = [14987.21908136239472, -4167.238879182765231, 185.144527051558839, -4167.238879182765231, 8384.764184773990564,
+           -2381.746110441541532, 185.144527051558839, -2381.746110441541532, 12017.63909753215012]
+    s = utils.getTotalDynamicStress(2.0)  # (fixed bodies moving count too)
+    assert [s[i // 3, i % 3] for i in range(9)] == REF
+    with pytest.raises(ValueError, match="Must provide volume"):  # (the reference logs this and returns zeros)
+        utils.getTotalDynamicStress()

@@ -696,6 +696,31 @@ def randomOrientation():
                       b * math.sin(2 * math.pi * u3))
 
 
+def perpendicularArea(axis):
+    """Area of the face perpendicular to `axis` (0, 1, 2) of the box holding all spheres (aabbExtrema())."""
+    lo, hi = aabbExtrema()
+    a, b = (axis + 1) % 3, (axis + 2) % 3
+    return (hi[a] - lo[a]) * (hi[b] - lo[b])
+
+
+def getSpheresVolume2D(mask=-1):
+    """Total area of the spheres seen as discs (sum of pi·r²), of those whose mask shares a bit with `mask`
+    (-1: all)."""
+    return sum((math.pi * b.shape.radius ** 2 for b in O.bodies if isinstance(b.shape, Sphere) and (mask == -1 or (b.mask & mask))), 0.0)
+
+
+def getTotalDynamicStress(volume=0):
+    """The dynamic (kinetic) stress sum over bodies of m·v⊗v divided by `volume` (required here: there is no
+    periodic cell)."""
+    if not volume > 0:
+        raise ValueError('getTotalDynamicStress: Must provide volume if scene is not periodic!')
+    total = Matrix3.Zero
+    for b in O.bodies:
+        mv, v = b.state.mass * b.state.vel, b.state.vel
+        total = total + Matrix3(*[mv[i] * v[j] for i in range(3) for j in range(3)])
+    return total / volume
+
+
 _VARS_TAG = 'pickledPythonVariablesDictionary'
 
 
@@ -724,7 +749,7 @@ def loadVars(mark=None):
 
 __all__ += ['SpherePWaveTimeStep', 'RayleighWaveTimeStep', 'growParticles', 'growParticle', 'setContactFriction',
             'sumFacetNormalForces', 'negPosExtremeIds', 'cart2spher', 'spher2cart', 'fractionalBox', 'scalarOnColorScale',
-            'randomOrientation', 'saveVars', 'loadVars']
+            'randomOrientation', 'saveVars', 'loadVars', 'perpendicularArea', 'getSpheresVolume2D', 'getTotalDynamicStress']
 
 from .params import readParamsFromTable, waitIfBatch  # noqa: E402
 __all__ += ['readParamsFromTable', 'waitIfBatch']
