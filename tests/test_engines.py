@@ -462,3 +462,47 @@ def test_rotating_drum_example(tmp_path):
     assert turned and turned.group(1) == turned.group(2) == '1.4999'
     bed = re.search(r'displaced by ([-\d.]+) degrees', r.stdout)
     assert bed and 8 < float(bed.group(1)) < 25
+
+
+# --- DragEngine, LinearDragEngine -----------------------------------------------------------------------
+
+def test_drag_engines_as_the_reference():
+    from yade import DragEngine, LinearDragEngine
+    assert (DragEngine().Rho, DragEngine().Cd, LinearDragEngine().nu) == (1.225, 0.47, 0.001)  # REF defaults
+    O.bodies.append([sphere((0, 0, 0), 0.1), sphere((1, 0, 0), 0.2), facet([(5, 5, 5), (6, 5, 5), (5, 6, 5)])])
+    O.bodies[0].state.vel = (3, -4, 0)
+    O.bodies[1].state.vel = (0, 0, 2)
+    O.engines = [ForceResetter(), DragEngine(ids=[0, 1, 2], Rho=1000, Cd=0.5), LinearDragEngine(ids=[1, 2], nu=0.01),
+                 NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 1e-4
+    O.step()
+    # -v/|v|·(1/2·rho·|v|²·Cd·pi·r²), and for body 1 also -6·pi·nu·r·v; the facet gets nothing
+    assert O.forces.f(0) == Vector3(-117.8097245096172401, 157.0796326794896913, 0)  # REF
+    assert O.forces.f(1) == Vector3(0, 0, -125.7391043672778892)  # REF
+    assert O.forces.f(2) == Vector3(0, 0, 0)  # REF
+    assert O.bodies[0].state.vel == Vector3(2.996624999999999872, -3.995499999999999829, 0)  # REF
+
+
+def test_linear_drag_terminal_velocity():
+    from yade import LinearDragEngine
+    O.bodies.append(sphere((0, 0, 0), 0.01))
+    O.engines = [ForceResetter(), LinearDragEngine(ids=[0], nu=1.0), NewtonIntegrator(gravity=(0, 0, -9.81))]
+    O.dt = 1e-5
+    O.run(20000, True)
+    assert O.bodies[0].state.vel[2] == -0.21783745513911598  # REF (NewtonIntegrator's default damping 0.2)
+    # without numerical damping: v(t) = -v_inf (1 - exp(-t/tau)), v_inf = m g / b, tau = m / b
+    O.engines = O.engines[:2] + [NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    O.bodies[0].state.vel = Vector3.Zero
+    O.resetTime()
+    O.run(20000, True)
+    m = O.bodies[0].state.mass
+    b = 6 * math.pi * 1.0 * 0.01
+    assert O.bodies[0].state.vel[2] == pytest.approx(-m * 9.81 / b * (1 - math.exp(-O.time * b / m)), rel=1e-4)
+
+
+def test_drag_engines_refuse_ids_of_no_body():
+    from yade import DragEngine
+    O.bodies.append(sphere((0, 0, 0), 0.1))
+    O.engines = [ForceResetter(), DragEngine(ids=[7]), NewtonIntegrator()]
+    with pytest.raises(IndexError, match="DragEngine.ids contains 7"):  # (the reference skips it silently)
+        O.step()
