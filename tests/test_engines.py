@@ -506,3 +506,43 @@ def test_drag_engines_refuse_ids_of_no_body():
     O.engines = [ForceResetter(), DragEngine(ids=[7]), NewtonIntegrator()]
     with pytest.raises(IndexError, match="DragEngine.ids contains 7"):  # (the reference skips it silently)
         O.step()
+
+
+# --- StepDisplacer --------------------------------------------------------------------------------------
+
+def test_step_displacer_as_the_reference():
+    from yade import StepDisplacer
+    q = Quaternion((0, 0, 1), 0.1)
+    O.bodies.append([sphere((0, 0, 0), 0.1), sphere((1, 0, 0), 0.2)])
+    O.bodies[1].state.vel = (1, 2, 3)
+    O.engines = [ForceResetter(), StepDisplacer(ids=[0, 1], mov=(0.01, 0, -0.02), rot=q), NewtonIntegrator(gravity=(0, 0, -10))]
+    O.dt = 1e-3
+    O.run(3, True)
+    assert O.bodies[0].state.pos == Vector3(0.02999999999999999889, 0, -0.06004800000000001109)  # REF
+    assert O.bodies[1].state.pos == Vector3(1.032999999999999696, 0.006000000000000000125, -0.05107199999999999934)  # REF
+    assert O.bodies[0].state.ori.toAxisAngle()[1] == pytest.approx(0.3, abs=1e-15)
+    assert O.bodies[1].state.vel == Vector3(1, 2, 2.963999999999999968)  # REF
+    # setVelocities: velocities mov/dt and rot/dt, the integrator moves the bodies (fixed ones too)
+    O.reset()
+    O.bodies.append([sphere((0, 0, 0), 0.1), sphere((1, 0, 0), 0.2, fixed=True)])
+    O.engines = [ForceResetter(), StepDisplacer(ids=[0, 1], mov=(0.01, 0, -0.02), rot=q, setVelocities=True),
+                 NewtonIntegrator(gravity=(0, 0, -10))]
+    O.dt = 1e-3
+    O.run(3, True)
+    assert O.bodies[0].state.pos == Vector3(0.02999999999999999889, 0, -0.06002399999999999403)  # REF
+    assert O.bodies[0].state.vel == Vector3(10, 0, -20.00799999999999912)  # REF
+    assert O.bodies[1].state.vel == Vector3(10, 0, -20) and O.bodies[1].state.angVel == Vector3(0, 0, 100)  # REF
+
+
+def test_step_displacer_moves_a_sphere_into_contact():
+    from yade import StepDisplacer
+    O.bodies.append([sphere((0, 0, 0), 0.5, fixed=True), sphere((1.2, 0, 0), 0.5)])  # (two fixed bodies never interact)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 StepDisplacer(ids=[1], mov=(-0.01, 0, 0)), NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 1e-3
+    O.run(25, True)  # the gap of 0.2 closes after 20 steps
+    assert O.interactions.countReal() == 1
+    # (the contact force pushes body 1 back a little; the loop ran before the last move)
+    assert O.bodies[1].state.pos[0] == pytest.approx(1.2 - 0.25, abs=5e-3)
+    assert O.interactions[0, 1].geom.penetrationDepth == pytest.approx(0.04, abs=5e-3)
