@@ -35,6 +35,23 @@ def test_bad_slaves_are_refused_and_leave_the_engine_as_it_was():
         ParallelEngine([f], [f])
 
 
+def test_a_parallel_engine_cannot_hold_itself_at_any_depth():
+    pe1 = ParallelEngine([ForceResetter()])
+    with pytest.raises(ValueError, match="its own slave"):
+        pe1.slaves = [pe1]
+    pe2 = ParallelEngine([[ForceResetter(), pe1]], label='outer')
+    pe3 = ParallelEngine([pe2])
+    for bad in ([pe2], [[ForceResetter(), pe3]]):  # pe1 in pe2 in pe1; pe1 in pe2 in pe3 in pe1
+        with pytest.raises(ValueError, match="its own slave"):
+            pe1.slaves = bad
+        assert len(pe1.slaves) == 1 and type(pe1.slaves[0]) is ForceResetter
+    # nested without a cycle runs, each engine once a step
+    r = PyRunner(command='pass', iterPeriod=1)
+    O.engines = [ParallelEngine([ParallelEngine([[ParallelEngine([r])]])])]
+    O.run(3, True)
+    assert r.nDone == 3
+
+
 def falling_pair_engines(grouped):
     O.reset()
     O.bodies.append([sphere((0, 0, 0), 0.5, fixed=True), sphere((0, 0, 1.02), 0.5)])

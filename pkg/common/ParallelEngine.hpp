@@ -25,6 +25,11 @@ public:
     void setSlaves(const std::vector<std::vector<std::shared_ptr<Engine>>>& groups);
     std::vector<std::vector<std::shared_ptr<Engine>>> slaves() const;
     void action() override;
+    // Whether `e` is one of the slaves, or a slave of a ParallelEngine among them (at any depth).
+    bool holds(const Engine* e) const;
+
+private:
+    bool running = false; // set during action(): a cycle read from a file is reported, not recursed into
 };
 
 } // namespace yade
