@@ -1,5 +1,7 @@
 """Sphere packings, as in yade.pack: SpherePack (geometry only: centers and radii) and its makeCloud
-loose random packing.
+loose random packing; volume predicates (inSphere, inCylinder... and their boolean operations,
+yade._packPredicates) and the regular packings that fill them (regularOrtho, regularHexa), and
+filterSpherePack.
 
     from yade import pack
     sp = pack.SpherePack()
@@ -8,10 +10,15 @@ loose random packing.
 
 SpherePack is implemented in C++ (pkg/dem/SpherePack); toSimulation is added here.
 """
-from ._yade import O, SpherePack
-from . import utils
+import math
+import warnings
 
-__all__ = ['SpherePack']
+from ._yade import O, SpherePack, Vector3
+from . import utils
+from ._packPredicates import *  # noqa: F401,F403
+from ._packPredicates import Predicate, __all__ as _predicateNames
+
+__all__ = ['SpherePack', 'regularOrtho', 'regularHexa', 'filterSpherePack'] + _predicateNames
 
 
 def _periodicCell(sp):
@@ -36,3 +43,73 @@ def _toSimulation(self, **kw):
 
 
 SpherePack.toSimulation = _toSimulation
+
+
+def _latticeBox(predicate, radius, gap, who):
+    if not isinstance(predicate, Predicate):
+        raise TypeError('%s: predicate must be a volume predicate (pack.inSphere(...), ...), got %s' % (who, type(predicate).__name__))
+    radius, gap = float(radius), float(gap)
+    if not (radius > 0 and math.isfinite(radius)):
+        raise ValueError('%s: radius must be positive and finite, got %r' % (who, radius))
+    if not (gap >= 0 and math.isfinite(gap)):
+        raise ValueError('%s: gap must be zero or positive and finite, got %r' % (who, gap))
+    lo, hi = (Vector3(v) for v in predicate.aabb())
+    if not all(math.isfinite(x) for x in list(lo) + list(hi)):
+        raise ValueError('%s: the predicate has an unbounded box (%s, %s); intersect it with a bounded one (pred & pack.inAlignedBox(...))'
+                         % (who, tuple(lo), tuple(hi)))
+    return lo, hi, radius, gap
+
+
+def regularOrtho(predicate, radius, gap, **kw):
+    """Spheres of the given radius on a cubic lattice of spacing 2*radius+gap, from the corner of the
+    predicate's box, those inside the predicate (at least radius from its boundary); returns the
+    list of bodies made by utils.sphere(center, radius, **kw)."""
+    lo, hi, r, gap = _latticeBox(predicate, radius, gap, 'regularOrtho')
+    a = 2 * r + gap
+    n = [int(math.ceil((h - l) / a)) + 1 for l, h in zip(lo, hi)]
+    centers = [c for i in range(n[0]) for j in range(n[1]) for k in range(n[2])
+               for c in (Vector3(lo[0] + r + i * a, lo[1] + r + j * a, lo[2] + r + k * a),) if predicate(c, r)]
+    return [utils.sphere(c, r, **kw) for c in centers]
+
+
+def regularHexa(predicate, radius, gap, **kw):
+    """Spheres of the given radius in hexagonal close packing (spacing 2*radius+gap between
+    neighbours; layers along z, rows along y), those inside the predicate (at least radius from
+    its boundary); returns the list of bodies made by utils.sphere(center, radius, **kw)."""
+    lo, hi, r, gap = _latticeBox(predicate, radius, gap, 'regularHexa')
+    a = 2 * r + gap
+    dy, dz = a * math.sqrt(3) / 2, a * math.sqrt(2 / 3.)  # between rows, between layers
+    n = [int(math.ceil((hi[0] - lo[0]) / a)) + 2, int(math.ceil((hi[1] - lo[1]) / dy)) + 2, int(math.ceil((hi[2] - lo[2]) / dz)) + 2]
+    centers = []
+    for i in range(n[0]):
+        for j in range(n[1]):
+            for k in range(n[2]):
+                # rows alternate by half a spacing along x; odd layers sit over the holes of even ones
+                c = Vector3(lo[0] + (i + .5 * ((j + k) % 2)) * a, lo[1] + (j + (k % 2) / 3.) * dy, lo[2] + k * dz)
+                if predicate(c, r):
+                    centers.append(c)
+    return [utils.sphere(c, r, **kw) for c in centers]
+
+
+def filterSpherePack(predicate, spherePack, returnSpherePack=None, **kw):
+    """The spheres of spherePack inside the predicate (each at least its radius from the boundary),
+    the packing first moved so that its centre is the predicate's: a new SpherePack with
+    returnSpherePack=True, else a list of bodies made by utils.sphere(center, radius, **kw)
+    (without returnSpherePack, with the reference's FutureWarning). spherePack is not changed."""
+    if not isinstance(predicate, Predicate):
+        raise TypeError('filterSpherePack: predicate must be a volume predicate, got %s' % type(predicate).__name__)
+    if not isinstance(spherePack, SpherePack):
+        raise TypeError('filterSpherePack: spherePack must be a SpherePack, got %s' % type(spherePack).__name__)
+    if returnSpherePack is None:
+        warnings.warn('filterSpherePack: specify returnSpherePack=True to get a SpherePack (add it with its toSimulation()), '
+                      'or False to get a list of bodies', FutureWarning, stacklevel=2)
+    dimP, dimS = Vector3(predicate.dim()), Vector3(spherePack.dim())
+    if any(s < p for s, p in zip(dimS, dimP)):
+        warnings.warn("Packing's dimension (%s) doesn't fully contain dimension of the predicate (%s)." % (tuple(dimS), tuple(dimP)))
+    shift = Vector3(predicate.center()) - Vector3(spherePack.center())
+    kept = [(c, r) for c, r in ((Vector3(c) + shift, r) for c, r in spherePack) if predicate(c, r)]
+    if returnSpherePack:
+        out = SpherePack()
+        out.fromList(kept)
+        return out
+    return [utils.sphere(c, r, **kw) for c, r in kept]
