@@ -9,6 +9,8 @@ from ._yade import O, setNumThreads  # noqa: F401
 
 from . import config, wrapper, system, _customConverters  # noqa: E402,F401  (module layout of Yade)
 from . import math, minieigenHP, libVersions  # noqa: E402,F401
+from .libVersions import printAllVersions  # noqa: E402,F401
+from .minieigenHP import Vector2c, Vector3c, Vector6c, Matrix3c, Matrix6c, HP1  # noqa: E402,F401  (at top level, as in the reference)
 version = config.version
 # old names of renamed classes (GranularMat, InteractionGeometry...): they warn and build the current class
 globals().update({_k: _v for _k, _v in system.cxxCtorsDict().items() if _k not in globals()})

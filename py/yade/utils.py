@@ -12,7 +12,8 @@ __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMa
            'forcesOnCoordPlane', 'getStress', 'bodyStressTensors', 'normalShearStressTensors', 'fabricTensor', 'momentum',
            'angularMomentum', 'maxOverlapRatio', 'numIntrsOfEachBody', 'intrsOfEachBody', 'getBodyIdsContacts', 'psd', 'setRefSe3',
            'shiftBodies', 'calm', 'randomizeColors', 'highlightNone', 'wireAll', 'wireNone', 'wireNoSpheres', 'setBodyPosition',
-           'setBodyVelocity', 'setBodyAngularVelocity', 'setBodyOrientation', 'setBodyColor', 'runningInBatch', 'replaceCollider']
+           'setBodyVelocity', 'setBodyAngularVelocity', 'setBodyOrientation', 'setBodyColor', 'runningInBatch', 'replaceCollider',
+           'facetBox', 'facetCylinder']
 
 
 def typedEngine(name):
@@ -21,6 +22,20 @@ def typedEngine(name):
         if type(e).__name__ == name:
             return e
     raise IndexError("no engine of class %s in O.engines" % name)
+
+
+def _movedToGeom(name):
+    def alias(*args, **kw):
+        import warnings
+        warnings.warn('Function utils.%s is deprecated, use geom.%s instead.' % (name, name), stacklevel=2)
+        from . import geom
+        return getattr(geom, name)(*args, **kw)
+    alias.__name__ = alias.__qualname__ = name
+    alias.__doc__ = 'Deprecated (as in the reference): geom.%s, with a warning.' % name
+    return alias
+
+
+facetBox, facetCylinder = _movedToGeom('facetBox'), _movedToGeom('facetCylinder')
 
 
 def defaultMaterial():
