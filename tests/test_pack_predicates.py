@@ -153,3 +153,46 @@ def test_bad_input_is_refused_clearly():
     with pytest.raises(NotImplementedError, match="aabb"):
         pack.Predicate().aabb()
     assert len(O.bodies) == 0
+
+
+def test_half_space_and_convex_polyhedron_as_the_reference():
+    h = pack.inHalfSpace((1, 2, 3), (0, 0, 1))
+    assert box(h) == ((-float('inf'), -float('inf'), 3.0), (float('inf'),) * 3)
+    assert [h((0, 0, 3.5), 0), h((0, 0, 2.5), 0), h((0, 0, 3.5), .6), h((0, 0, 3.5), .4), h((0, 0, 2.9), -.2)] == [True, False, False, True, True]
+    h = pack.inHalfSpace((0, 0, 0), (1, 1, 0))  # (a slanted one: an infinite box)
+    assert box(h) == ((-float('inf'),) * 3, (float('inf'),) * 3)
+    assert [h((1, 0, 0), 0), h((-1, 0, 0), 0), h((1, 0, 0), .8), h((1, 0, 0), .7)] == [True, False, False, True]
+    c = pack.inConvexPolyhedron([((0, 0, 0), (1, 0, 0)), ((1, 0, 0), (-1, 0, 0)), ((0, 0, 0), (0, 1, 0)), ((0, 1, 0), (0, -1, 0)),
+                                 ((0, 0, 0), (0, 0, 1)), ((0, 0, 2), (0, 0, -1))])
+    assert box(c) == ((0, 0, 0), (1, 1, 2))
+    assert [c((.5, .5, 1), 0), c((.5, .5, 1), .4), c((.5, .5, 1), .6), c((1.5, .5, 1), 0)] == [True, True, False, False]
+    # a tetrahedron: its box is that of its vertices; a regular packing fills it
+    tet = pack.inConvexPolyhedron([((0, 0, 0), (1, 0, 0)), ((0, 0, 0), (0, 1, 0)), ((0, 0, 0), (0, 0, 1)), ((1, 0, 0), (-1, -1, -1))])
+    assert near(box(tet)[0], (0, 0, 0)) and near(box(tet)[1], (1, 1, 1))
+    assert all(sum(b.state.pos) <= 1 - .05 * 3 ** .5 + 1e-12 for b in pack.regularOrtho(tet, .05, 0))
+    with pytest.raises(ValueError, match="unbounded"):
+        pack.inConvexPolyhedron([((0, 0, 0), (1, 0, 0)), ((1, 0, 0), (-1, 0, 0)), ((0, 0, 0), (0, 1, 0)), ((0, 1, 0), (0, -1, 0))])
+    with pytest.raises(ValueError, match="dir must not be zero"):
+        pack.inHalfSpace((0, 0, 0), (0, 0, 0))
+
+
+def test_best_fit_oriented_box_and_sphere_pack_helpers():
+    from yade import Quaternion
+    q = Quaternion((1, 2, 3), .5)
+    corners = [q * Vector3(3 * x, 2 * y, z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+    center, half, ori = pack.cloudBestFitOBB(tuple(corners))
+    # the box of those corners exactly (6 x 4 x 2 = 48; the reference's search stops at 57.4 here)
+    assert 8 * half[0] * half[1] * half[2] == pytest.approx(48, rel=1e-9) and sorted(half) == pytest.approx([1, 2, 3], rel=1e-9)
+    assert near(center, (0, 0, 0), 1e-9)
+    assert all(abs(x) <= h + 1e-9 for p in corners for x, h in zip(ori.conjugate() * (p - center), half))
+    sp = pack.SpherePack()
+    sp.fromList([((1, 0, 0), .1), ((0, 2, 0), .2)])
+    assert type(iter(sp)) is pack.SpherePackIterator and [r for _, r in iter(sp)] == [.1, .2]
+    from math import pi
+    ids = sp.toSimulation(rot=Quaternion((0, 0, 1), pi / 2), color=(0, 0, 1))
+    # the reference: (2.2e-16, 1, 0) and (-2, 4.4e-16, 0), orientations unchanged
+    assert near(O.bodies[ids[0]].state.pos, (0, 1, 0), 1e-15) and near(O.bodies[ids[1]].state.pos, (-2, 0, 0), 1e-15)
+    assert tuple(O.bodies[ids[0]].state.ori) == (0, 0, 0, 1) and pack.SpherePack_toSimulation is pack.SpherePack.toSimulation
+    with pytest.raises(TypeError, match="rot must be"):
+        sp.toSimulation(rot=(0, 0, 1))
+    assert len(O.bodies) == 2

@@ -2,7 +2,7 @@
 inside them, at least `pad` away from their boundary (so that a sphere of radius pad centred there
 does not stick out), and give their axis-aligned bounding box. The primitives inSphere,
 inAlignedBox, inCylinder, inEllipsoid, inHyperboloid, inParallelepiped, notInNotch, inSpace, and
-the boolean operations on them: A & B (intersection), A | B (union), A - B (difference), A ^ B
+inHalfSpace, inConvexPolyhedron, and the boolean operations on them: A & B (intersection), A | B (union), A - B (difference), A ^ B
 (symmetric difference). A Python class deriving from Predicate and defining __call__(pt, pad) and
 aabb() takes part in the operations too.
 
@@ -21,7 +21,7 @@ from ._yade import Vector3
 
 __all__ = ['Predicate', 'PredicateBoolean', 'PredicateUnion', 'PredicateIntersection', 'PredicateDifference',
            'PredicateSymmetricDifference', 'inSphere', 'inAlignedBox', 'inCylinder', 'inEllipsoid', 'inHyperboloid',
-           'inParallelepiped', 'notInNotch', 'inSpace']
+           'inParallelepiped', 'notInNotch', 'inSpace', 'inHalfSpace', 'inConvexPolyhedron']
 
 _INF = float('inf')
 
@@ -317,3 +317,85 @@ class inSpace(Predicate):
 
     def aabb(self):
         return (Vector3(-_INF, -_INF, -_INF), Vector3(_INF, _INF, _INF))
+
+
+class inHalfSpace(Predicate):
+    """Half-space predicate: inHalfSpace(center, dir), the points on the side of the plane through
+    center that dir points to. Its bounding box is infinite, except on the bounded side when dir is
+    along a coordinate axis."""
+
+    def __init__(self, center, dir):
+        self._c = _vec(center, 'inHalfSpace: center')
+        d = _vec(dir, 'inHalfSpace: dir')
+        if not d.norm() > 0:
+            raise ValueError('inHalfSpace: dir must not be zero')
+        self._n = d / d.norm()
+
+    def __call__(self, pt, pad):
+        return (Vector3(pt) - self._c).dot(self._n) >= pad
+
+    def aabb(self):
+        lo, hi = [-_INF] * 3, [_INF] * 3
+        axes = [i for i in range(3) if self._n[i] != 0]
+        if len(axes) == 1:
+            i = axes[0]
+            (lo if self._n[i] > 0 else hi)[i] = self._c[i]
+        return (Vector3(*lo), Vector3(*hi))
+
+
+class inConvexPolyhedron(Predicate):
+    """Convex polyhedron predicate: inConvexPolyhedron([(point, normal), ...]), the intersection of the
+    half-spaces each on the side of the plane through point that normal points to. Its bounding box
+    is that of its vertices (the polyhedron must be bounded)."""
+
+    def __init__(self, planes):
+        try:
+            pairs = [(p, n) for p, n in planes]
+        except (TypeError, ValueError) as e:
+            raise TypeError('inConvexPolyhedron: expected a list of (point, normal) pairs, got %r' % (planes,)) from e
+        if len(pairs) < 4:
+            raise ValueError('inConvexPolyhedron: a bounded polyhedron needs at least 4 planes, got %d' % len(pairs))
+        self._planes = []
+        for i, (p, n) in enumerate(pairs):
+            p, n = _vec(p, 'inConvexPolyhedron: point %d' % i), _vec(n, 'inConvexPolyhedron: normal %d' % i)
+            if not n.norm() > 0:
+                raise ValueError('inConvexPolyhedron: normal %d is zero' % i)
+            self._planes.append((p, n / n.norm()))
+        self._box = self._vertexBox()
+
+    def __call__(self, pt, pad):
+        x = Vector3(pt)
+        return all((x - p).dot(n) >= pad for p, n in self._planes)
+
+    def _vertexBox(self):
+        # the vertices: the points where three planes meet that are in every half-space
+        import itertools
+        import numpy
+        tol = 1e-9 * (1 + max(p.norm() for p, _ in self._planes))
+        verts = []
+        for a, b, c in itertools.combinations(self._planes, 3):
+            A = numpy.array([list(a[1]), list(b[1]), list(c[1])])
+            if abs(numpy.linalg.det(A)) < 1e-12:
+                continue
+            x = numpy.linalg.solve(A, [a[1].dot(a[0]), b[1].dot(b[0]), c[1].dot(c[0])])
+            v = Vector3(*x)
+            if all((v - p).dot(n) >= -tol for p, n in self._planes):
+                verts.append(v)
+        if not verts:
+            raise ValueError('inConvexPolyhedron: the half-spaces have no common vertex (empty or unbounded)')
+        # unbounded when some direction d leaves no half-space (n·d >= 0 for all n): the edges of that
+        # cone of directions are crosses of two normals
+        normals = [n for _, n in self._planes]
+        for a, b in itertools.combinations(normals, 2):
+            d = a.cross(b)
+            if d.norm() < 1e-12:
+                continue
+            for e in (d, -d):
+                if all(n.dot(e) >= -1e-12 * e.norm() for n in normals):
+                    raise ValueError('inConvexPolyhedron: the half-spaces leave the polyhedron unbounded along %s' % (tuple(e / e.norm()),))
+        lo = Vector3(*[min(v[i] for v in verts) for i in range(3)])
+        hi = Vector3(*[max(v[i] for v in verts) for i in range(3)])
+        return (lo, hi)
+
+    def aabb(self):
+        return (Vector3(self._box[0]), Vector3(self._box[1]))

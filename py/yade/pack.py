@@ -13,12 +13,13 @@ SpherePack is implemented in C++ (pkg/dem/SpherePack); toSimulation is added her
 import math
 import warnings
 
-from ._yade import O, SpherePack, Vector3
+from ._yade import O, SpherePack, Vector3, Quaternion, Matrix3
 from . import utils
 from ._packPredicates import *  # noqa: F401,F403
 from ._packPredicates import Predicate, __all__ as _predicateNames
 
-__all__ = ['SpherePack', 'regularOrtho', 'regularHexa', 'filterSpherePack'] + _predicateNames
+__all__ = ['SpherePack', 'SpherePackIterator', 'SpherePack_toSimulation', 'regularOrtho', 'regularHexa', 'filterSpherePack',
+           'cloudBestFitOBB'] + _predicateNames
 
 
 def _periodicCell(sp):
@@ -34,15 +35,20 @@ def _periodicCell(sp):
             'set sp.cellSize=(0,0,0) to add the spheres without a periodic cell' % (tuple(sp.cellSize),)) from e
 
 
-def _toSimulation(self, **kw):
+def SpherePack_toSimulation(self, rot=None, **kw):
     """Add the spheres to the simulation as bodies made by utils.sphere(center, radius, **kw), in one
-    O.bodies.append call; returns the list of their ids. A periodic packing also sets the periodic cell."""
+    O.bodies.append call; returns the list of their ids. rot (a Quaternion or a rotation Matrix3)
+    turns the packing about the origin first. A periodic packing also sets the periodic cell."""
+    if rot is not None and not isinstance(rot, (Quaternion, Matrix3)):
+        raise TypeError('SpherePack.toSimulation: rot must be a Quaternion or a Matrix3, got %s' % type(rot).__name__)
     if self.isPeriodic:
         _periodicCell(self)
-    return O.bodies.append([utils.sphere(c, r, **kw) for c, r in self])
+    turn = (lambda c: c) if rot is None else (lambda c: rot * Vector3(c))
+    return O.bodies.append([utils.sphere(turn(c), r, **kw) for c, r in self])
 
 
-SpherePack.toSimulation = _toSimulation
+SpherePack.toSimulation = SpherePack_toSimulation
+SpherePackIterator = type(iter(SpherePack()))  # (what iter(sp) gives: (center, radius) pairs)
 
 
 def _latticeBox(predicate, radius, gap, who):
@@ -113,3 +119,60 @@ def filterSpherePack(predicate, spherePack, returnSpherePack=None, **kw):
         out.fromList(kept)
         return out
     return [utils.sphere(c, r, **kw) for c, r in kept]
+
+
+def cloudBestFitOBB(points):
+    """The oriented bounding box of least volume of the points (a sequence of 3-vectors), found by a
+    search over orientations (a coarse grid of rotations and the principal axes, then refined):
+    returns (center, halfSize, orientation), the points p lying within
+    orientation.conjugate() * (p - center) in [-halfSize, halfSize]."""
+    import numpy
+    try:
+        P = numpy.array([[float(x) for x in p] for p in points], dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError('cloudBestFitOBB: expected a sequence of 3-vectors') from e
+    if P.ndim != 2 or P.shape[1] != 3 or len(P) < 1:
+        raise TypeError('cloudBestFitOBB: expected a non-empty sequence of 3-vectors')
+    if not numpy.isfinite(P).all():
+        raise ValueError('cloudBestFitOBB: the points must be finite')
+
+    def volume(R):  # (the box's axes are the columns of R)
+        Q = P @ R
+        return numpy.prod(Q.max(0) - Q.min(0))
+
+    def rotation(axis, angle):
+        axis = numpy.asarray(axis, float) / numpy.linalg.norm(axis)
+        K = numpy.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        return numpy.eye(3) + numpy.sin(angle) * K + (1 - numpy.cos(angle)) * K @ K
+
+    candidates = [numpy.eye(3)]
+    if len(P) > 3:
+        _, vecs = numpy.linalg.eigh(numpy.cov(P.T))
+        candidates.append(vecs * numpy.sign(numpy.linalg.det(vecs)))
+    grid = numpy.radians(numpy.arange(0, 90, 15))
+    for a in grid:
+        for b in grid:
+            for c in grid:
+                candidates.append(rotation((0, 0, 1), a) @ rotation((0, 1, 0), b) @ rotation((1, 0, 0), c))
+    best = sorted(candidates, key=volume)[:4]
+    results = []
+    for R in best:  # pattern search over small turns about the box's own axes
+        v, step = volume(R), .2
+        while step > 1e-9:
+            improved = False
+            for i in range(3):
+                for sgn in (1, -1):
+                    T = R @ rotation(numpy.eye(3)[i], sgn * step)
+                    w = volume(T)
+                    if w < v * (1 - 1e-15):
+                        R, v, improved = T, w, True
+            if not improved:
+                step *= .5
+        results.append((v, R))
+    v, R = min(results, key=lambda x: x[0])
+    Q = P @ R
+    lo, hi = Q.min(0), Q.max(0)
+    center = R @ ((lo + hi) / 2)
+    orientation = Quaternion(Matrix3(*R.flatten()))
+    orientation.normalize()
+    return (Vector3(*center), Vector3(*((hi - lo) / 2)), orientation)
