@@ -109,3 +109,31 @@ def test_domain_limiter_erases_falling_spheres_with_their_contacts():
     O.dt = 1e-4
     O.run(5000, True)  # falling for 0.5 s: 1.2 m down, out of the box
     assert d.nDeleted == 3 and len([b for b in O.bodies if b]) == 0 and O.interactions.countReal() == 0
+
+
+@pytest.mark.parametrize("axis,radius,vel", [  # the reference's velocities after one step (fi 0.3 -> 0.31)
+    ((0, 0, 1), .2, (0.6005838479785364, -1.907685956420789, 0.0)),
+    ((1, 0, 0), -1, (-4.440892098500626e-16, 9.538429782103952, 3.0029192398925986)),
+    ((1, 1, 1), .2, (0.8768070251159319, -1.6314627792833936, 0.7546557541674622)),
+    ((0, 0, -1), -1, (-3.0029192398925986, -9.538429782103952, 0.0)),
+])
+def test_bicycle_pedal_as_the_reference(axis, radius, vel):
+    from yade import BicyclePedalEngine
+    O.bodies.append(sphere((1, .5, .3), .1, fixed=True))
+    b = BicyclePedalEngine(ids=[0], angularVelocity=10, rotationAxis=axis, radius=radius, fi=.3)
+    O.engines = [b, NewtonIntegrator()]
+    O.dt = 1e-3
+    O.run(1, True)
+    assert tuple(O.bodies[0].state.vel) == vel and b.fi == .31 and b.rotationAxis.norm() == pytest.approx(1, rel=1e-15)
+
+
+def test_bicycle_pedal_closes_its_circle_without_turning():
+    from yade import BicyclePedalEngine
+    O.bodies.append(sphere((1, .5, .3), .1, fixed=True))
+    O.engines = [BicyclePedalEngine(ids=[0], angularVelocity=2 * math.pi, rotationAxis=(0, 1, 1), radius=.2), NewtonIntegrator()]
+    O.dt = 1e-3
+    O.run(500, True)  # half a turn: across the circle, 2 radii from the start, in the plane normal to the axis
+    d = O.bodies[0].state.pos - (1, .5, .3)
+    assert d.norm() == pytest.approx(.4, rel=1e-5) and abs(d.dot((0, 1, 1))) < 1e-12
+    O.run(500, True)
+    assert (O.bodies[0].state.pos - (1, .5, .3)).norm() < 1e-12 and O.bodies[0].state.angVel.norm() == 0
