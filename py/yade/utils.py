@@ -768,3 +768,356 @@ __all__ += ['SpherePWaveTimeStep', 'RayleighWaveTimeStep', 'growParticles', 'gro
 
 from .params import readParamsFromTable, waitIfBatch  # noqa: E402
 __all__ += ['readParamsFromTable', 'waitIfBatch']
+
+
+# --- more of the reference's utils functions (behaviour found by running the reference on small scenes) ---
+
+def _axisArg(fn, axis, message='Axis must be from {0,1,2}=x,y,z.'):
+    if isinstance(axis, bool) or not isinstance(axis, int):
+        raise TypeError('%s: axis must be an int 0, 1 or 2, got %r' % (fn, axis))
+    if axis not in (0, 1, 2):
+        raise ValueError(message)
+    return axis
+
+
+def _boxArg(fn, name, box):
+    """() -> None; else the (min, max) corners of an axis-aligned box as NumPy arrays."""
+    np = _np()
+    if not isinstance(box, (tuple, list)):
+        raise TypeError('%s: %s must be a tuple ((xmin,ymin,zmin),(xmax,ymax,zmax)), got %r' % (fn, name, box))
+    if len(box) == 0:
+        return None
+    if len(box) < 2:
+        raise ValueError('%s: %s needs two corners ((xmin,ymin,zmin),(xmax,ymax,zmax)), got %r' % (fn, name, box))
+    try:
+        lo, hi = (np.array([float(x) for x in box[k]][:3]) for k in (0, 1))
+    except (TypeError, ValueError):
+        raise TypeError('%s: %s corners must be 3 numbers each, got %r' % (fn, name, box))
+    if len(lo) < 3 or len(hi) < 3:
+        raise ValueError('%s: %s corners must be 3 numbers each, got %r' % (fn, name, box))
+    return lo, hi
+
+
+def _strictlyInside(pos, box):
+    """Rows of pos (N x 3) strictly inside box (lo, hi) (a point on a face is outside, as in the reference)."""
+    lo, hi = box
+    return ((pos > lo) & (pos < hi)).all(axis=1)
+
+
+def totalForceInVolume():
+    """(Σ over the real contacts of the absolute values of the components of the contact force (normal + shear),
+    the mean over the contacts of (kn + 2 ks)/3); (Vector3.Zero, -1.0) without contacts."""
+    np = _np()
+    c = _contacts()
+    if len(c['id1']) == 0:
+        return (Vector3.Zero, -1.0)
+    f = np.abs(np.asarray(c['normalForce']) + np.asarray(c['shearForce'])).sum(axis=0)
+    k = [(i.phys.kn + 2 * i.phys.ks) / 3. for i in O.interactions if i.isReal and hasattr(i.phys, 'ks')]
+    return (Vector3(*[float(x) for x in f]), float(sum(k) / len(k)) if k else -1.0)
+
+
+def bodyNumInteractionsHistogram(aabb):
+    """Histogram of the number of real contacts of the bodies whose position is strictly inside the box
+    aabb=((xmin,ymin,zmin),(xmax,ymax,zmax)): ([distinct numbers of contacts, ascending], [number of bodies with each])."""
+    np = _np()
+    if not isinstance(aabb, tuple):
+        raise TypeError('bodyNumInteractionsHistogram: aabb must be a tuple ((xmin,ymin,zmin),(xmax,ymax,zmax)), got %r' % (aabb,))
+    box = _boxArg('bodyNumInteractionsHistogram', 'aabb', aabb)
+    if box is None:
+        raise ValueError('bodyNumInteractionsHistogram: aabb must have two corners')
+    a = O.bodies.arrays()
+    n = len(O.bodies)
+    if n == 0:
+        return ([], [])
+    ok = np.asarray(a.exists, dtype=bool) & _strictlyInside(_bodyPos(), box)
+    counts = np.asarray(numIntrsOfEachBody())[ok]
+    vals, freq = np.unique(counts, return_counts=True)
+    return ([int(v) for v in vals], [int(x) for x in freq])
+
+
+def interactionAnglesHistogram(axis, mask=0, bins=20, aabb=(), sphSph=False, minProjLen=1e-6):
+    """Histogram of the directions of the contact normals projected on the plane perpendicular to `axis`:
+    ([start of each of the `bins` intervals of [0, pi)], [sum of the projection lengths of the normals in each]).
+    The angle is that of the projection (components (axis+1)%3, (axis+2)%3), folded into [0, pi); a normal goes
+    to the interval whose start is nearest (those nearest to pi are left out, as in the reference). Only contacts
+    with both bodies matching `mask` (0: all), with at least one body strictly inside `aabb` (if given), between
+    two spheres (with sphSph) and with a projection at least `minProjLen` long count."""
+    np = _np()
+    _axisArg('interactionAnglesHistogram', axis)
+    if isinstance(bins, bool) or not isinstance(bins, int):
+        raise TypeError('interactionAnglesHistogram: bins must be an int, got %r' % (bins,))
+    if bins < 0:
+        raise ValueError('interactionAnglesHistogram: bins must not be negative, got %d' % bins)
+    box = _boxArg('interactionAnglesHistogram', 'aabb', aabb)
+    if bins == 0:
+        return ([], [])
+    step = math.pi / bins
+    starts = [i * step for i in range(bins)]
+    hist = np.zeros(bins)
+    c = _contacts()
+    if len(c['id1']):
+        id1, id2 = np.asarray(c['id1']), np.asarray(c['id2'])
+        ok = np.ones(len(id1), dtype=bool)
+        if mask:
+            masks = np.array([b.mask if b is not None else 0 for b in O.bodies])
+            ok &= ((masks[id1] & mask) != 0) & ((masks[id2] & mask) != 0)
+        if box is not None:
+            inside = _strictlyInside(_bodyPos(), box)
+            ok &= inside[id1] | inside[id2]
+        if sphSph:
+            r = np.asarray(O.bodies.arrays().radius)
+            ok &= ~np.isnan(r[id1]) & ~np.isnan(r[id2])
+        nrm = np.asarray(c['normal'])
+        u, v = nrm[:, (axis + 1) % 3], nrm[:, (axis + 2) % 3]
+        proj = np.hypot(u, v)
+        ok &= proj >= minProjLen
+        ang = np.arctan2(v, u)
+        ang = np.where(ang < 0, ang + math.pi, ang)
+        idx = np.floor(ang / step + .5).astype(int)
+        ok &= idx < bins
+        np.add.at(hist, idx[ok], proj[ok])
+    return (starts, [float(x) for x in hist])
+
+
+def coordsAndDisplacements(axis, Aabb=()):
+    """([coordinate along axis of each body], [its displacement from the reference position along axis]), in id
+    order, of all bodies or only of those strictly inside Aabb=((xmin,ymin,zmin),(xmax,ymax,zmax))."""
+    np = _np()
+    _axisArg('coordsAndDisplacements', axis)
+    box = _boxArg('coordsAndDisplacements', 'Aabb', Aabb)
+    ids = [b.id for b in O.bodies if b is not None]
+    if not ids:
+        return ([], [])
+    pos = _bodyPos()[ids]
+    ref = np.array([tuple(O.bodies[i].state.refPos) for i in ids], dtype=float)
+    if box is not None:
+        ok = _strictlyInside(pos, box)
+        pos, ref = pos[ok], ref[ok]
+    return ([float(x) for x in pos[:, axis]], [float(x) for x in pos[:, axis] - ref[:, axis]])
+
+
+def _convexHullArea(pts):
+    """Area of the convex hull of 2D points (N x 2 array), Andrew's monotone chain."""
+    pts = sorted(set(map(tuple, pts)))
+    if len(pts) < 3:
+        return 0.0
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    hull = lower[:-1] + upper[:-1]
+    return abs(sum(hull[i][0] * hull[i - 1][1] - hull[i - 1][0] * hull[i][1] for i in range(len(hull)))) / 2.
+
+
+def approxSectionArea(coord, axis):
+    """Approximate area of the section of the packing by the plane perpendicular to `axis` at `coord`: the
+    convex hull of the spheres crossing the plane (|x - coord| <= r), each one replaced by the 6 points
+    (r cos(k pi/3), 2 r sin(k pi/3)) around its center in the plane (components (axis+1)%3, (axis+2)%3),
+    as the reference does (a single sphere gives 3 sqrt(3) r^2); 0 without such spheres."""
+    np = _np()
+    _axisArg('approxSectionArea', axis, 'Axis must be \u2208 {0,1,2}')
+    coord = float(coord)
+    r = np.asarray(O.bodies.arrays().radius)
+    pos = _bodyPos()
+    if len(r) == 0:
+        return 0.0
+    ok = ~np.isnan(r)
+    ok[ok] = np.abs(pos[ok, axis] - coord) <= r[ok]
+    if not ok.any():
+        return 0.0
+    k = np.arange(6) * math.pi / 3
+    a, b = (axis + 1) % 3, (axis + 2) % 3
+    xs = (pos[ok, a][:, None] + r[ok][:, None] * np.cos(k)[None, :]).ravel()
+    ys = (pos[ok, b][:, None] + 2 * r[ok][:, None] * np.sin(k)[None, :]).ravel()
+    return float(_convexHullArea(np.stack([xs, ys], axis=1)))
+
+
+def pointInsidePolygon(pt, vertices):
+    """Whether the 2D point pt=(x, y) is inside the polygon of the 2D `vertices` (even-odd rule, ray casting).
+    (The reference crashes on every call, so points on the boundary follow this implementation only.)"""
+    try:
+        x, y = float(pt[0]), float(pt[1])
+    except (TypeError, IndexError, ValueError):
+        raise TypeError('pointInsidePolygon: pt must be a 2D point (x, y), got %r' % (pt,))
+    try:
+        vs = [(float(v[0]), float(v[1])) for v in vertices]
+    except (TypeError, IndexError, ValueError):
+        raise TypeError('pointInsidePolygon: vertices must be a sequence of 2D points, got %r' % (vertices,))
+    if len(vs) < 3:
+        raise ValueError('pointInsidePolygon: vertices must have at least 3 points, got %d' % len(vs))
+    inside = False
+    j = len(vs) - 1
+    for i in range(len(vs)):
+        xi, yi = vs[i]
+        xj, yj = vs[j]
+        if (yi > y) != (yj > y) and x < (xj - xi) * (y - yi) / (yj - yi) + xi:
+            inside = not inside
+        j = i
+    return inside
+
+
+def _periodicWrap(x, x0, x1):
+    """x moved by a whole number of periods (x1 - x0) into [x0, x1); (wrapped x, number of periods removed)."""
+    period = x1 - x0
+    if period == 0 or math.isnan(period):
+        return float('nan'), 0
+    n = math.floor((x - x0) / period)
+    return x - n * period, n
+
+
+def spiralProject(pt, dH_dTheta, axis=2, periodStart=float('nan'), theta0=0):
+    """Project pt on the spiral around `axis` rising dH_dTheta per radian: ((r, h), theta), with r the distance
+    from the axis, theta its angle (in [0, 2 pi), from the (axis+1)%3 direction toward (axis+2)%3; with periodStart,
+    moved by whole turns into [periodStart, periodStart + 2 pi)) and h the height of pt above the spiral through
+    theta0: pt[axis] - dH_dTheta (theta - theta0), brought within half a turn of the spiral's height at theta when
+    periodStart is NaN."""
+    _axisArg('spiralProject', axis)
+    try:
+        p = [float(pt[k]) for k in range(3)]
+    except (TypeError, IndexError, ValueError):
+        raise TypeError('spiralProject: pt must be a 3D point, got %r' % (pt,))
+    dH, periodStart, theta0 = float(dH_dTheta), float(periodStart), float(theta0)
+    a, b = p[(axis + 1) % 3], p[(axis + 2) % 3]
+    r = math.hypot(a, b)
+    theta = math.atan2(b, a) if r > 0 else 0.0
+    if theta < 0:
+        theta += 2 * math.pi
+    hRef = dH * (theta - theta0)
+    if math.isnan(periodStart):
+        h, _ = _periodicWrap(p[axis] - hRef, hRef - math.pi * dH, hRef + math.pi * dH)
+        return ((r, h), theta)
+    theta, _ = _periodicWrap(theta, periodStart, periodStart + 2 * math.pi)
+    return ((r, p[axis] - dH * (theta - theta0)), theta)
+
+
+def setNewVerticesOfFacet(b, v1, v2, v3):
+    """Give facet body b the new vertices v1, v2, v3 (global coordinates): its position becomes their inscribed
+    circle's center and its vertices are stored relative to it (its orientation is left as it is)."""
+    if not isinstance(b, Body) or not isinstance(b.shape, Facet):
+        raise TypeError('setNewVerticesOfFacet: b must be a body with a Facet shape, got %r' % (b,))
+    vs = [_finiteVector(n, v) for n, v in (('v1', v1), ('v2', v2), ('v3', v3))]
+    center = _inscribedCircleCenter(*vs)
+    b.state.pos = center
+    b.shape.vertices = [v - center for v in vs]
+
+
+def vmData():
+    """Memory use of this process: the VmData line of /proc/self/status, in kB (an int)."""
+    with open('/proc/self/status') as f:
+        for line in f:
+            if line.startswith('VmData:'):
+                return int(line.split()[1])
+    raise RuntimeError('vmData: no VmData line in /proc/self/status')
+
+
+def voxelPorosity(resolution=200, start=Vector3.Zero, end=Vector3.Zero):
+    """Porosity (V - Vv)/V of the box from `start` to `end`, divided into resolution^3 voxels (resolution along
+    each side), Vv being the voxels whose corner nearest `start` is inside a sphere; 1.0 for an empty or
+    inverted box. Close to, but not voxel for voxel the same as, the reference's count."""
+    np = _np()
+    if isinstance(resolution, bool) or not isinstance(resolution, int):
+        raise TypeError('voxelPorosity: resolution must be an int, got %r' % (resolution,))
+    s, e = np.array(tuple(start), dtype=float), np.array(tuple(end), dtype=float)
+    if s.shape != (3,) or e.shape != (3,):
+        raise TypeError('voxelPorosity: start and end must be 3D points')
+    if (s == e).all():
+        raise ValueError('utils.voxelPorosity: cannot calculate porosity when start==end of the volume box.')
+    if resolution < 50:
+        raise ValueError("utils.voxelPorosity: it doesn't make sense to calculate porosity with voxel resolution below 50.")
+    if (e <= s).any():
+        return 1.0
+    d = (e - s) / resolution
+    grid = np.zeros((resolution,) * 3, dtype=bool)
+    r = np.asarray(O.bodies.arrays().radius)
+    pos = _bodyPos()
+    for i in np.nonzero(~np.isnan(r))[0] if len(r) else []:
+        c, rad = pos[i], r[i]
+        lo = np.clip(np.floor((c - rad - s) / d).astype(int), 0, resolution)
+        hi = np.clip(np.ceil((c + rad - s) / d).astype(int) + 1, 0, resolution)
+        if (hi <= lo).any():
+            continue
+        xs, ys, zs = (s[k] + np.arange(lo[k], hi[k]) * d[k] - c[k] for k in range(3))
+        inside = xs[:, None, None] ** 2 + ys[None, :, None] ** 2 + zs[None, None, :] ** 2 < rad * rad
+        grid[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]] |= inside
+    return float(1 - grid.sum() / grid.size)
+
+
+class TableParamReader(object):
+    """Read a table of simulation parameters (the reference's utils.TableParamReader): one column per parameter,
+    the first non-blank line gives the names, '#' starts a comment, '=' repeats the value of the line above; a
+    'description' column is built from the columns whose name ends in '!' (the '!' removed), or from all columns,
+    when absent ('__line=N__' appended to a repeated description). Values are kept as strings."""
+
+    def __init__(self, file):
+        if not isinstance(file, str):
+            raise TypeError('TableParamReader: file must be a file name (str), got %r' % (file,))
+        with open(file) as f:
+            lines = f.read().splitlines()
+        headings, values, prev = None, {}, None
+        for lineNo, raw in enumerate(lines, start=1):
+            words = raw.split('#', 1)[0].split()
+            if not words:
+                continue
+            if headings is None:
+                headings = words
+                continue
+            if len(words) < len(headings):
+                raise ValueError('TableParamReader: %s line %d has %d values for %d columns'
+                                 % (file, lineNo, len(words), len(headings)))
+            row = []
+            for j in range(len(headings)):
+                w = words[j]
+                if w == '=':
+                    if prev is None:
+                        raise ValueError("TableParamReader: %s line %d: '=' with no line above" % (file, lineNo))
+                    w = prev[j]
+                row.append(w)
+            prev = row
+            values[lineNo] = row
+        headings = headings or []
+        bangs = [h for h in headings if h.endswith('!')]
+        names = [h[:-1] if h.endswith('!') else h for h in headings]
+        self.values = {}
+        seen = set()
+        for lineNo, row in values.items():
+            d = dict(zip(names, row))
+            if 'description' not in d:
+                use = [h[:-1] for h in bangs] if bangs else names
+                desc = ','.join('%s=%s' % (n, d[n]) for n in use)
+                if desc in seen:
+                    desc += '__line=%d__' % lineNo
+                d['description'] = desc
+            seen.add(d['description'])
+            self.values[lineNo] = d
+
+    def paramDict(self):
+        """{line number: {parameter name: value (str)}} of the table, '=' and '!' resolved, 'description' added."""
+        return self.values
+
+
+def _defaultEngines():
+    from ._yade import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, Bo1_Facet_Aabb, Bo1_Box_Aabb, InteractionLoop,
+                        Ig2_Sphere_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom, Ig2_Box_Sphere_ScGeom, Ip2_FrictMat_FrictMat_FrictPhys,
+                        Law2_ScGeom_FrictPhys_CundallStrack, GlobalStiffnessTimeStepper, NewtonIntegrator)
+    return [ForceResetter(),
+            InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Box_Aabb()], label='collider'),
+            InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],
+                            [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()], label='interactionLoop'),
+            GlobalStiffnessTimeStepper(timeStepUpdateInterval=10, label='timeStepper'),
+            NewtonIntegrator(damping=.2, label='newton')]
+
+
+# The reference's engine list (a list made once at import, as there).
+defaultEngines = _defaultEngines()
+
+__all__ += ['totalForceInVolume', 'bodyNumInteractionsHistogram', 'interactionAnglesHistogram', 'coordsAndDisplacements',
+            'approxSectionArea', 'pointInsidePolygon', 'spiralProject', 'setNewVerticesOfFacet', 'vmData', 'voxelPorosity',
+            'defaultEngines', 'TableParamReader']
