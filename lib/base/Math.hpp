@@ -22,5 +22,11 @@ constexpr Real Inf = std::numeric_limits<Real>::infinity();
 constexpr Real Mathr_PI = 3.14159265358979323846;
 
 inline bool isFinite(const Vector3r& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+// v scaled to unit length, unless it is zero or already of unit length to within a few ulps (so that
+// normalizing again, e.g. after a save and load, changes no bit).
+inline void normalizeDirection(Vector3r& v) {
+    const Real n = v.norm();
+    if (n > 0 && std::abs(n - 1) > 4 * std::numeric_limits<Real>::epsilon()) v /= n;
+}
 
 } // namespace yade

@@ -5,7 +5,7 @@
 namespace yade {
 
 void RotationEngine::postLoad() {
-    if (rotationAxis.squaredNorm() > 0) rotationAxis.normalize();
+    normalizeDirection(rotationAxis);
 }
 
 void RotationEngine::apply(const std::vector<int>& bodyIds) {

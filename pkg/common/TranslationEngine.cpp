@@ -4,7 +4,7 @@
 namespace yade {
 
 void TranslationEngine::postLoad() {
-    if (translationAxis.squaredNorm() > 0) translationAxis.normalize();
+    normalizeDirection(translationAxis);
 }
 
 void TranslationEngine::apply(const std::vector<int>& bodyIds) {
