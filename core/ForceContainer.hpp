@@ -59,6 +59,7 @@ public:
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
+    long long lastReset = -1; // the step in which ForceResetter last ran (NewtonIntegrator.warnNoForceReset)
     bool hasPermanent() const { return anyPermanent; }
     // One body's share of an add: a force, a torque or both.
     struct Contribution {

@@ -543,3 +543,52 @@ def test_tracking_energy_does_not_change_the_trajectory(threads):
     b = run(True)
     assert len(O.energy) == 5
     assert a == b  # bitwise
+
+
+def test_kinSplit_gives_translational_and_rotational_terms_that_add_up_to_kinetic():
+    """NewtonIntegrator.kinSplit (the reference's): kinTrans + kinRot instead of kinetic."""
+    from yade import ForceResetter, NewtonIntegrator
+    from yade.utils import sphere
+    totals = []
+    for split in (False, True):
+        O.reset()
+        O.bodies.append(sphere((0, 0, 0), .1))
+        O.bodies[0].state.angVel = (1, 2, 3)
+        O.bodies[0].state.vel = (.5, 0, 0)
+        O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10), kinSplit=split, damping=0)]
+        O.trackEnergy = True
+        O.dt = 1e-3
+        O.run(3, True)
+        totals.append(dict(O.energy.items()))
+    plain, split = totals
+    assert 'kinetic' in plain and 'kinTrans' not in plain
+    assert 'kinetic' not in split and {'kinTrans', 'kinRot', 'gravWork'} <= set(split)
+    b = O.bodies[0]
+    m, I = b.state.mass, b.state.inertia[0]
+    # (no torque: the spin is constant; kinTrans with the on-step velocity, as kinetic)
+    assert split['kinRot'] == pytest.approx(.5 * I * (1 + 4 + 9), rel=1e-14)
+    v = b.state.vel - 0.5 * O.dt * Vector3(0, 0, -10)
+    assert split['kinTrans'] == pytest.approx(.5 * m * v.squaredNorm(), rel=1e-12)
+    assert split['kinTrans'] + split['kinRot'] == pytest.approx(plain['kinetic'], rel=1e-14)
+
+
+def test_a_missing_force_resetter_is_reported_once_per_run_of_such_steps():
+    import warnings
+    from yade import ForceEngine
+    O.bodies.append(sphere((0, 0, 0), .1))
+    O.engines = [ForceEngine(ids=[0], force=(1, 0, 0)), NewtonIntegrator(damping=0)]
+    O.dt = 1e-3
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter('always')
+        O.run(3, True)
+        said = [str(x.message) for x in w if 'ForceResetter' in str(x.message)]
+        assert len(said) == 1 and "O.forces last reset in step -1, while the current step is 0" in said[0]
+        # (without a reset the force adds up step by step, as in the reference: 1, 2, 3 N)
+        assert O.forces.f(0)[0] == 3
+        O.engines[-1].warnNoForceReset = False
+        O.run(2, True)
+        O.engines = [ForceResetter()] + O.engines
+        O.engines[-1].warnNoForceReset = True
+        O.run(2, True)
+        assert len([x for x in w if 'ForceResetter' in str(x.message)]) == 1
+    assert NewtonIntegrator().exactAsphericalRot is True and NewtonIntegrator(exactAsphericalRot=False).exactAsphericalRot is False

@@ -3,6 +3,9 @@
 
 namespace yade {
 
-void ForceResetter::action() { scene->forces.reset(); }
+void ForceResetter::action() {
+    scene->forces.reset();
+    scene->forces.lastReset = scene->iter;
+}
 
 } // namespace yade

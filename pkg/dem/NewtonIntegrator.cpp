@@ -2,6 +2,8 @@
 #include <lib/base/ThreadRange.hpp>
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
+#include <lib/base/Logging.hpp>
+#include <string>
 #include <pkg/dem/ScGeom.hpp>
 #include <sstream>
 #include <thread>
@@ -41,10 +43,11 @@ static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
     return a;
 }
 
-void NewtonIntegrator::addEnergy(Scene& s, const EnergySums& e, int gravId, int kinId, int dampId) const {
-    s.energy.add(gravId, e.grav); // (a term appears once something was added to it, as in Yade)
-    s.energy.add(kinId, e.kin);
-    if (damping != 0) s.energy.add(dampId, e.damp);
+void NewtonIntegrator::addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const {
+    s.energy.add(id.grav, e.grav); // (a term appears once something was added to it, as in Yade)
+    s.energy.add(id.kin, e.kin);
+    if (id.kinRot >= 0) s.energy.add(id.kinRot, e.kinRot);
+    if (damping != 0) s.energy.add(id.damp, e.damp);
 }
 
 void NewtonIntegrator::action() {
@@ -52,12 +55,18 @@ void NewtonIntegrator::action() {
     const Real dt = s.dt;
     const long n = (long)s.bodies.size();
     s.forces.sync(); // (the remote contributions of the threads: few)
+    if (warnNoForceReset && s.forces.lastReset != s.iter && warnedNoReset != s.iter - 1) // (once for a run of such steps)
+        logWarning("NewtonIntegrator: O.forces last reset in step " + std::to_string(s.forces.lastReset) + ", while the current step is "
+                + std::to_string(s.iter) + ". Did you forget to include ForceResetter in O.engines? (NewtonIntegrator.warnNoForceReset=False silences this)");
+    if (s.forces.lastReset != s.iter) warnedNoReset = s.iter;
     const bool energy = s.trackEnergy;
-    int kinId = -1, gravId = -1, dampId = -1;
+    const bool split = energy && kinSplit;
+    EnergyTerms ids;
     if (energy) {
-        kinId = s.energy.term("kinetic", false);
-        gravId = s.energy.term("gravWork", true);
-        dampId = s.energy.term("nonviscDamp", true);
+        ids.kin = s.energy.term(split ? "kinTrans" : "kinetic", false);
+        if (split) ids.kinRot = s.energy.term("kinRot", false);
+        ids.grav = s.energy.term("gravWork", true);
+        ids.damp = s.energy.term("nonviscDamp", true);
     }
     // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
     // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
@@ -129,7 +138,7 @@ void NewtonIntegrator::action() {
         const Vector3r& inertia = h.inertia[id];
         const bool dynamic = blocked != State::DOF_ALL;
         Vector3r vel = h.vel[id], angVel = h.angVel[id];
-        Real eGrav = 0, eKin = 0, eDamp = 0; // energy terms, added once the new state is known finite
+        Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
         if (dynamic) {
             const bool damped = lambda != 0 && h.isDamped[id];
             Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
@@ -146,7 +155,11 @@ void NewtonIntegrator::action() {
             if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
                 const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
                 eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
-                eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
+                if (split) {
+                    eKin = 0.5 * mass * v.squaredNorm();
+                    eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
+                } else
+                    eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
                 eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
             }
             vel += dt * accel;
@@ -156,7 +169,7 @@ void NewtonIntegrator::action() {
         const Real angVelNorm = angVel.norm();
         const Real angle = angVelNorm * dt;
         const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
+        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
             continue;
@@ -168,6 +181,7 @@ void NewtonIntegrator::action() {
         if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
             e.grav += eGrav;
             e.kin += eKin;
+            e.kinRot += eKinRot;
             e.damp += eDamp;
             e.any = true;
         }
@@ -207,7 +221,7 @@ void NewtonIntegrator::action() {
             }
         }
     }
-    if (mySums.any) addEnergy(s, mySums, gravId, kinId, dampId);
+    if (mySums.any) addEnergy(s, mySums, ids);
     }
     if (steal && energy) { // per range, chunk by chunk in order: the same sums whoever computed each chunk
         for (int t = 0; t < threads; ++t) {
@@ -215,10 +229,11 @@ void NewtonIntegrator::action() {
             for (const EnergySums& e : chunkSums[t]) {
                 range.grav += e.grav;
                 range.kin += e.kin;
+                range.kinRot += e.kinRot;
                 range.damp += e.damp;
                 range.any |= e.any;
             }
-            if (range.any) addEnergy(s, range, gravId, kinId, dampId);
+            if (range.any) addEnergy(s, range, ids);
         }
     }
     if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));

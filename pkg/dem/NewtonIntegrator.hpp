@@ -27,6 +27,7 @@ public:
     Real maxVelocitySq = NaN;
     int mask = -1;
     int stabilityCheckPeriod = 100;
+    bool exactAsphericalRot = true, kinSplit = false, warnNoForceReset = true;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("damping", damping, "Numerical damping coefficient λd of (3.5.12), in [0,1)", Attr::nonNegative);
@@ -36,6 +37,10 @@ public:
         v.attr("mask", mask, "Only bodies with (body.mask & mask) != 0 are moved (-1: all)");
         v.attr("stabilityCheckPeriod", stabilityCheckPeriod,
                 "Every this many steps (and when O.dt changes, and for bodies with a new contact every step), stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
+        v.attr("exactAsphericalRot", exactAsphericalRot,
+                "The reference's switch for the rotation of aspherical bodies, accepted for its scripts: here every body's rotation is integrated with the spherical update (3.5.2), exact for spheres (doc/compatibility.md)");
+        v.attr("kinSplit", kinSplit, "Track the kinetic energy as two terms, translational (kinTrans) and rotational (kinRot), instead of kinetic");
+        v.attr("warnNoForceReset", warnNoForceReset, "Warn when O.forces were not reset in the current step (no ForceResetter in O.engines before this engine)");
     }
     void action() override;
 
@@ -44,11 +49,15 @@ private:
     static constexpr long chunkBodies = 256;
     std::vector<std::unique_ptr<ChunkQueue>> queues; // per thread: its range's chunks (work stealing)
     struct EnergySums {
-        Real grav = 0, kin = 0, damp = 0;
+        Real grav = 0, kin = 0, damp = 0, kinRot = 0; // (kin: all the kinetic energy, or its translational part with kinSplit)
         bool any = false; // a dynamic body was integrated
     };
     std::vector<std::vector<EnergySums>> chunkSums; // per thread range, per chunk
-    void addEnergy(Scene& s, const EnergySums& e, int gravId, int kinId, int dampId) const;
+    struct EnergyTerms {
+        int grav = -1, kin = -1, kinRot = -1, damp = -1;
+    };
+    void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
+    long long warnedNoReset = -2; // the step of the last missing-ForceResetter warning
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
