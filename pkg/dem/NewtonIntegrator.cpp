@@ -34,6 +34,28 @@ static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
     }
 }
 
+// Euler's equations (3.5.10) in the body's principal frame: the angular acceleration of the spin w
+// under the torque t, I the principal moments of inertia.
+static inline Vector3r eulerAccel(const Vector3r& w, const Vector3r& t, const Vector3r& I) {
+    return Vector3r((t[0] - (I[2] - I[1]) * w[1] * w[2]) / I[0], (t[1] - (I[0] - I[2]) * w[2] * w[0]) / I[1],
+            (t[2] - (I[1] - I[0]) * w[0] * w[1]) / I[2]);
+}
+
+// The rotation of an aspherical body over one step, the manual's SPIRAL scheme (3.5.2, delValle2023):
+// the spin in the body's frame w (in: the last step's, out: the new one) from three estimates of
+// Euler's equations with the torque t held over the step, then the orientation turned by the new
+// spin in the body's frame, q·(cos θ, ŵ sin θ), θ = |w|·dt/2.
+static inline Quaternionr spiralStep(const Quaternionr& q, Vector3r& w, const Vector3r& t, const Vector3r& I, Real dt) {
+    const Vector3r k1 = dt * eulerAccel(w, t, I);
+    const Vector3r k2 = dt * eulerAccel(w + k1, t, I);
+    const Vector3r k3 = dt * eulerAccel(w + 0.25 * (k1 + k2), t, I);
+    w += (k1 + k2 + 4 * k3) / 6;
+    Real sincHalf, cosHalf;
+    sincCosHalf(w.norm() * dt, sincHalf, cosHalf);
+    const Real k = sincHalf * (0.5 * dt);
+    return q * Quaternionr(cosHalf, k * w[0], k * w[1], k * w[2]);
+}
+
 // Gravity without the blocked translations.
 static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
     Vector3r a = g;
@@ -82,6 +104,7 @@ void NewtonIntegrator::action() {
     const Vector3r g = gravity;
     const Real lambda = damping;
     const bool gravityDamped = dampGravity;
+    const bool aspherical = exactAsphericalRot;
     const int moveMask = mask;
     Real maxV2 = 0;
     long diverged = -1; // a body whose new state is not finite (not written)
@@ -139,6 +162,8 @@ void NewtonIntegrator::action() {
         const bool dynamic = blocked != State::DOF_ALL;
         Vector3r vel = h.vel[id], angVel = h.angVel[id];
         Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
+        Quaternionr newOri; // (an aspherical body's, when turned)
+        bool turned = false;
         if (dynamic) {
             const bool damped = lambda != 0 && h.isDamped[id];
             Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
@@ -149,27 +174,55 @@ void NewtonIntegrator::action() {
             if (!gravityDamped) accel += gFree;
             // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
             const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
-            Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
-            const Vector3r angUndamped = angAccel;
-            if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
-            if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
-                eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
-                if (split) {
-                    eKin = 0.5 * mass * v.squaredNorm();
-                    eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
-                } else
-                    eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
-                eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
+            // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
+            if (aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
+                    && !(inertia[0] == inertia[1] && inertia[1] == inertia[2]) && (inertia.array() > 0).all()) {
+                Vector3r torque = T[id];
+                const Vector3r undampedTorque = torque;
+                if (damped) damp(torque, angVel, 0, lambda); // (the sign of each component of torque·angVel)
+                const Quaternionr& q = h.ori[id];
+                const Vector3r before = q.conjugate() * angVel; // the spin in the body's frame
+                Vector3r after = before;
+                newOri = spiralStep(q, after, q.conjugate() * torque, inertia, dt);
+                turned = true;
+                const Vector3r newAngVel = newOri * after;
+                if (energy) { // (the rotation: the spin halfway through the step, in the body's frame)
+                    const Vector3r v = vel + 0.5 * dt * accel, wMid = 0.5 * (before + after);
+                    eGrav = -mass * gFree.dot(vel) * dt;
+                    const Real trans = 0.5 * mass * v.squaredNorm(), rot = 0.5 * wMid.dot(inertia.cwiseProduct(wMid));
+                    if (split) {
+                        eKin = trans;
+                        eKinRot = rot;
+                    } else
+                        eKin = trans + rot;
+                    eDamp = -dt * (mass * (accel - undamped).dot(v) + (torque - undampedTorque).dot(0.5 * (angVel + newAngVel)));
+                }
+                vel += dt * accel;
+                angVel = newAngVel;
+            } else {
+                Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
+                const Vector3r angUndamped = angAccel;
+                if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
+                if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
+                    const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
+                    eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
+                    if (split) {
+                        eKin = 0.5 * mass * v.squaredNorm();
+                        eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
+                    } else
+                        eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
+                    eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
+                }
+                vel += dt * accel;
+                angVel += dt * angAccel;
             }
-            vel += dt * accel;
-            angVel += dt * angAccel;
         }
         const Vector3r pos = statePos + vel * dt;
         const Real angVelNorm = angVel.norm();
         const Real angle = angVelNorm * dt;
         const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
+        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2 + (turned ? newOri.coeffs().sum() : 0))
+                || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
             continue;
@@ -186,11 +239,11 @@ void NewtonIntegrator::action() {
             e.any = true;
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
-        if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
+        if (angle != 0 || turned) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
             Real sincHalf, cosHalf;
             sincCosHalf(angle, sincHalf, cosHalf);
             const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
-            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
+            const Quaternionr q = turned ? newOri : Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
             // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
             // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
             // length from Python gets the exact division)

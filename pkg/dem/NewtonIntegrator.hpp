@@ -1,5 +1,5 @@
 // Integrates the motion of every body from its forces (3.5): leapfrog for positions (3.5.1),
-// spherical orientation update (3.5.2), adapted Cundall damping (3.5.12).
+// orientation update (3.5.2: spherical, or SPIRAL for aspherical bodies), adapted Cundall damping (3.5.12).
 #pragma once
 #include <core/Engine.hpp>
 #include <core/Body.hpp>
@@ -20,7 +20,7 @@ struct StabilityError : std::runtime_error {
 
 class NewtonIntegrator : public GlobalEngine {
 public:
-    static constexpr const char* classDoc = "Engine integrating the motion of every body from its forces (3.5): leapfrog positions (3.5.1), orientation update (3.5.2), Cundall's non-viscous damping (3.5.12) and gravity.";
+    static constexpr const char* classDoc = "Engine integrating the motion of every body from its forces (3.5): leapfrog positions (3.5.1), orientation update (3.5.2: spherical, or Euler's equations by the SPIRAL scheme for aspherical bodies), Cundall's non-viscous damping (3.5.12) and gravity.";
     Real damping = 0.2;
     Vector3r gravity = Vector3r::Zero();
     bool dampGravity = true;
@@ -38,7 +38,7 @@ public:
         v.attr("stabilityCheckPeriod", stabilityCheckPeriod,
                 "Every this many steps (and when O.dt changes, and for bodies with a new contact every step), stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
         v.attr("exactAsphericalRot", exactAsphericalRot,
-                "The reference's switch for the rotation of aspherical bodies, accepted for its scripts: here every body's rotation is integrated with the spherical update (3.5.2), exact for spheres (doc/compatibility.md)");
+                "Integrate the rotation of aspherical bodies (unequal principal moments of inertia, free rotations) with Euler's equations in their principal frame, the manual's SPIRAL scheme (3.5.2); False: the spherical update (3.5.9) for every body");
         v.attr("kinSplit", kinSplit, "Track the kinetic energy as two terms, translational (kinTrans) and rotational (kinRot), instead of kinetic");
         v.attr("warnNoForceReset", warnNoForceReset, "Warn when O.forces were not reset in the current step (no ForceResetter in O.engines before this engine)");
     }
