@@ -3,6 +3,8 @@
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <lib/base/Logging.hpp>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <pkg/dem/ScGeom.hpp>
 #include <sstream>
@@ -54,6 +56,39 @@ static inline Quaternionr spiralStep(const Quaternionr& q, Vector3r& w, const Ve
     sincCosHalf(w.norm() * dt, sincHalf, cosHalf);
     const Real k = sincHalf * (0.5 * dt);
     return q * Quaternionr(cosHalf, k * w[0], k * w[1], k * w[2]);
+}
+
+// Whether the principal moments differ (by their bits: one test for the spheres, instead of three
+// floating-point comparisons in the integrator's loop).
+static inline bool unequalMoments(const Vector3r& I) {
+    uint64_t a, b, c;
+    std::memcpy(&a, &I[0], sizeof a);
+    std::memcpy(&b, &I[1], sizeof b);
+    std::memcpy(&c, &I[2], sizeof c);
+    return ((a ^ b) | (b ^ c)) != 0;
+}
+
+// One step of an aspherical body's rotation (spiralStep), out of the integrator's loop (few bodies take it):
+// the new orientation and spin, the rotational kinetic energy at mid-step and the power of the damping
+// torque (for O.energy). lambda: the damping (0: none).
+struct AsphericalTurn {
+    Quaternionr ori;
+    Vector3r angVel;
+    Real kinetic, dampingPower;
+};
+static __attribute__((noinline)) AsphericalTurn turnAspherical(
+        const Quaternionr& q, const Vector3r& angVel, const Vector3r& torque, const Vector3r& I, Real dt, Real lambda) {
+    Vector3r damped = torque;
+    if (lambda != 0) NewtonIntegrator::damp(damped, angVel, 0, lambda); // (the sign of each component of torque·angVel)
+    const Vector3r before = q.conjugate() * angVel; // the spin in the body's frame
+    Vector3r after = before;
+    AsphericalTurn t;
+    t.ori = spiralStep(q, after, q.conjugate() * damped, I, dt);
+    t.angVel = t.ori * after;
+    const Vector3r mid = 0.5 * (before + after);
+    t.kinetic = 0.5 * mid.dot(I.cwiseProduct(mid));
+    t.dampingPower = (damped - torque).dot(0.5 * (angVel + t.angVel));
+    return t;
 }
 
 // Gravity without the blocked translations.
@@ -175,30 +210,25 @@ void NewtonIntegrator::action() {
             // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
             const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
             // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
-            if (aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
-                    && !(inertia[0] == inertia[1] && inertia[1] == inertia[2]) && (inertia.array() > 0).all()) {
-                Vector3r torque = T[id];
-                const Vector3r undampedTorque = torque;
-                if (damped) damp(torque, angVel, 0, lambda); // (the sign of each component of torque·angVel)
-                const Quaternionr& q = h.ori[id];
-                const Vector3r before = q.conjugate() * angVel; // the spin in the body's frame
-                Vector3r after = before;
-                newOri = spiralStep(q, after, q.conjugate() * torque, inertia, dt);
+            if (__builtin_expect(unequalMoments(inertia), 0) && aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
+                    && (inertia.array() > 0).all()) {
+                const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
+                newOri = t.ori;
                 turned = true;
-                const Vector3r newAngVel = newOri * after;
-                if (energy) { // (the rotation: the spin halfway through the step, in the body's frame)
-                    const Vector3r v = vel + 0.5 * dt * accel, wMid = 0.5 * (before + after);
+                if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
+                if (energy) {
+                    const Vector3r v = vel + 0.5 * dt * accel;
                     eGrav = -mass * gFree.dot(vel) * dt;
-                    const Real trans = 0.5 * mass * v.squaredNorm(), rot = 0.5 * wMid.dot(inertia.cwiseProduct(wMid));
+                    const Real trans = 0.5 * mass * v.squaredNorm();
                     if (split) {
                         eKin = trans;
-                        eKinRot = rot;
+                        eKinRot = t.kinetic;
                     } else
-                        eKin = trans + rot;
-                    eDamp = -dt * (mass * (accel - undamped).dot(v) + (torque - undampedTorque).dot(0.5 * (angVel + newAngVel)));
+                        eKin = trans + t.kinetic;
+                    eDamp = -dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
                 }
                 vel += dt * accel;
-                angVel = newAngVel;
+                angVel = t.angVel;
             } else {
                 Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
                 const Vector3r angUndamped = angAccel;
@@ -221,8 +251,7 @@ void NewtonIntegrator::action() {
         const Real angVelNorm = angVel.norm();
         const Real angle = angVelNorm * dt;
         const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2 + (turned ? newOri.coeffs().sum() : 0))
-                || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
+        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
 #pragma omp critical(yadeDiverged)
             diverged = std::max(diverged, id);
             continue;
@@ -239,11 +268,13 @@ void NewtonIntegrator::action() {
             e.any = true;
         }
         maxV2 = std::max(maxV2, vel.squaredNorm());
-        if (angle != 0 || turned) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
+        if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
+            h.ori[id] = newOri.normalized();
+        else if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
             Real sincHalf, cosHalf;
             sincCosHalf(angle, sincHalf, cosHalf);
             const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
-            const Quaternionr q = turned ? newOri : Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
+            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
             // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
             // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
             // length from Python gets the exact division)

@@ -59,6 +59,7 @@ private:
     void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
     long long warnedNoReset = -2; // the step of the last missing-ForceResetter warning
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
+public:
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
     // computed without branches (its value is random for bodies in contact: branches mispredict).
