@@ -95,7 +95,7 @@ void ContactPool::permute(const std::vector<uint32_t>& to) {
             j = i;
         }
     }
-    appendsSinceOrder = 0;
+    appendsSinceOrder = movesSinceOrder = 0;
 }
 
 bool ContactPool::removeAt(size_t slot) {
@@ -105,6 +105,7 @@ bool ContactPool::removeAt(size_t slot) {
         header(slot) = header(last);
         construct(slot, *geom(last), *phys(last));
         destroy(last);
+        ++movesSinceOrder;
     }
     --count;
     return slot != last;

@@ -48,7 +48,9 @@ public:
     bool removeAt(size_t slot);
     // Moves record s to slot to[s] for every s (a permutation of 0 .. size()-1). Not thread-safe.
     void permute(const std::vector<uint32_t>& to);
-    size_t appendsSinceOrder = 0; // records appended since the last permute()
+    // Records put out of the loop's order since the last permute(): appended at the end, and moved from
+    // the end into the slot of a record removed (removeAt).
+    size_t appendsSinceOrder = 0, movesSinceOrder = 0;
     // Slots of the contacts that ended while the loop ran (removed afterwards, InteractionContainer::sweep).
     std::vector<uint32_t> ended;
     void markEnded(size_t slot);

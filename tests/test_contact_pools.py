@@ -138,3 +138,36 @@ def test_vectors_of_a_contacts_views_are_copies_that_outlive_the_records():
     assert g.normal[0] != 5
     O.reset()
     assert n[0] == 5 and abs(g.normal.norm() - 1) < 1e-12  # (detached: its last values)
+
+
+def test_large_pools_are_put_back_in_the_loops_order_after_contacts_end():
+    """Contacts that end leave their rows to the last records; in pools larger than the caches (over
+    8 MB) the loop then read those records at random. Once one record in 16 is out of place the
+    pools are put back in the order the loop visits them: each thread's list by the smaller id."""
+    n = 24  # a cubic lattice, each sphere overlapping its six neighbours: 3·24²·23 = 39 744 contacts of 272+ bytes
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    O.bodies.append([sphere((2 * R * 0.99 * i, 2 * R * 0.99 * j, 2 * R * 0.99 * k), R)
+                     for i in range(n) for j in range(n) for k in range(n)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = 1e-9
+    O.run(2, True)  # (the records made in the first step are put in order at the start of the second)
+    real = 3 * n * n * (n - 1)
+    assert O.interactions.countReal() == real
+
+    def rows_in_order():
+        c = O.interactions.arrays()
+        low = np.minimum(c["id1"], c["id2"])
+        return len(low) == O.interactions.countReal() and int(np.sum(np.diff(low) < 0)) <= O.numThreads - 1  # (one sorted run per thread)
+
+    assert rows_in_order()
+    # every 12th contact erased (1/12 > 1/16 of the rows): the last records move into their rows
+    pairs = sorted((min(i.id1, i.id2), max(i.id1, i.id2)) for i in O.interactions)
+    for a, b in pairs[::12]:
+        O.interactions.erase(a, b)
+    assert not rows_in_order()
+    O.step()  # (nothing moved: the collider does not run, the erased pairs stay away)
+    assert O.interactions.countReal() == real - len(pairs[::12])
+    assert rows_in_order()

@@ -97,4 +97,5 @@ TEST(ContactPool, OrderingFollowsTheListsAndKeepsEachContactsValues) {
     }
     EXPECT_EQ(view->viewTarget(), intrs.geom(2)); // the view followed
     EXPECT_EQ(P.appendsSinceOrder, 0u);
+    EXPECT_EQ(P.movesSinceOrder, 0u);
 }
