@@ -23,6 +23,13 @@ BUILD = pathlib.Path(os.environ.get("YADE_BUILD_DIR") or REPO / "build")
 
 pytestmark = pytest.mark.skipif(not (BUILD / "yade").is_dir(), reason="yade is not built (run bash scripts/setup.sh)")
 
+
+def terminal_sigint():
+    """In the child: SIGINT as a program started from a terminal has it (default). A shell starts its
+    background jobs (`cmd &`, as a CI runner may start this suite) with SIGINT ignored, and Python,
+    like any program, then keeps it ignored: no Ctrl-C reaches such a job."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 # A PyRunner counts its calls; the first O.run(10, True) measures the offset between O.iter and
 # the count (the runner does not run at iteration 0); the script prints START, then blocks.
 PROLOGUE = """
@@ -47,7 +54,7 @@ def interrupt(tmp_path, body, delay=1.0):
     script.write_text(textwrap.dedent(PROLOGUE) + textwrap.dedent(body))
     env = dict(os.environ, YADE_BUILD_DIR=str(BUILD))
     p = subprocess.Popen(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(script)], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=env, cwd=str(tmp_path))
+                         stderr=subprocess.PIPE, text=True, env=env, cwd=str(tmp_path), preexec_fn=terminal_sigint)
     try:
         deadline = time.time() + 120
         line = ""
@@ -151,7 +158,7 @@ def test_sigint_stops_a_saved_simulation_run_by_the_launcher(tmp_path):
                        env=env, cwd=str(tmp_path), timeout=120)
     assert r.returncode == 0, r.stderr
     p = subprocess.Popen(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", "sim.yade.gz"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=env, cwd=str(tmp_path))
+                         stderr=subprocess.PIPE, text=True, env=env, cwd=str(tmp_path), preexec_fn=terminal_sigint)
     try:
         assert "Running simulation sim.yade.gz" in p.stdout.readline()
         time.sleep(1.0)
