@@ -416,6 +416,27 @@ def test_dyndt_can_be_set_as_in_the_reference(fresh_scene):
     assert O.dynDt is False and not O.engines[1].active
 
 
+
+def test_time_stepper_base_class_as_in_the_reference(fresh_scene):
+    # yade-double -n -x: TimeStepper (a GlobalEngine) is GlobalStiffnessTimeStepper's base, with
+    # active=True and timeStepUpdateInterval=1; run bare, the reference aborts the process
+    # ("terminate called without an active exception"): here a clear error stops the run
+    from yade import O, TimeStepper, GlobalEngine, GlobalStiffnessTimeStepper, ForceResetter, NewtonIntegrator
+    assert TimeStepper.__bases__ == (GlobalEngine,) and GlobalStiffnessTimeStepper.__bases__ == (TimeStepper,)
+    t = TimeStepper()
+    assert t.active is True and t.timeStepUpdateInterval == 1
+    g = GlobalStiffnessTimeStepper(timeStepUpdateInterval=7, active=False)
+    assert isinstance(g, TimeStepper) and g.timeStepUpdateInterval == 7 and not g.active
+    O.engines = [ForceResetter(), t, NewtonIntegrator()]
+    O.dt = 1e-3
+    with pytest.raises(RuntimeError, match='TimeStepper is the base class'):
+        O.run(1, True)
+    assert O.iter == 0
+    # O.dt < 0 and O.dynDt find any time stepper, the base class included
+    t.active = False
+    O.dt = -1
+    assert t.active and O.dt == 1e-3 and O.dynDt
+
 # ------------------------------------------------------------------ O.forces during a background run
 
 def test_forces_read_and_added_while_running_in_the_background(y):

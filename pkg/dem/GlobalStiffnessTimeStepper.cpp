@@ -5,8 +5,6 @@
 
 namespace yade {
 
-bool GlobalStiffnessTimeStepper::isActivated() { return active && scene->iter % timeStepUpdateInterval == 0; }
-
 void GlobalStiffnessTimeStepper::action() {
     const CriticalStep crit = criticalTimeStep(*scene);
     Real dt;

@@ -3,7 +3,7 @@
 #include <core/Functor.hpp>
 #include <core/SceneIO.hpp>
 #include <pkg/common/InteractionLoop.hpp>
-#include <pkg/dem/GlobalStiffnessTimeStepper.hpp>
+#include <core/TimeStepper.hpp>
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
@@ -470,9 +470,9 @@ struct EnergyProxy {
 struct OmegaProxy {};
 
 // The time stepper of O.engines (the first one; null if none).
-static GlobalStiffnessTimeStepper* timeStepper() {
+static TimeStepper* timeStepper() {
     for (const auto& e : scene().getEngines())
-        if (auto* t = dynamic_cast<GlobalStiffnessTimeStepper*>(e.get())) return t;
+        if (auto* t = dynamic_cast<TimeStepper*>(e.get())) return t;
     return nullptr;
 }
 
@@ -656,7 +656,7 @@ void bindOmega(py::module_& m) {
             .def_property("dt", [](OmegaProxy&) { return scene().dt; }, [](OmegaProxy&, Real v) {
                 // (a negative value hands the step to the time stepper in O.engines, as the manual says)
                 if (std::isfinite(v) && v < 0) {
-                    GlobalStiffnessTimeStepper* stepper = timeStepper();
+                    TimeStepper* stepper = timeStepper();
                     if (!stepper) throw std::runtime_error("No TimeStepper found in O.engines: O.dt < 0 hands the step to one (add e.g. GlobalStiffnessTimeStepper())");
                     stepper->active = true;
                     return;
@@ -664,10 +664,10 @@ void bindOmega(py::module_& m) {
                 scene().setDt(v);
             }, "Time step [s]; a negative value activates the time stepper of O.engines (GlobalStiffnessTimeStepper), which then sets it")
             .def_property("dynDt", [](OmegaProxy&) {
-                const GlobalStiffnessTimeStepper* stepper = timeStepper();
+                const TimeStepper* stepper = timeStepper();
                 return stepper && stepper->active;
             }, [](OmegaProxy&, bool v) {
-                GlobalStiffnessTimeStepper* stepper = timeStepper();
+                TimeStepper* stepper = timeStepper();
                 if (stepper) stepper->active = v;
                 else if (v) throw std::runtime_error("No TimeStepper found in O.engines.");
             }, "Whether a time stepper in O.engines sets O.dt (dynamic time step); True activates it (RuntimeError without one), False deactivates it")
