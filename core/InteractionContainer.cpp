@@ -178,10 +178,10 @@ void InteractionContainer::sweep() {
     }
 }
 
-void InteractionContainer::orderPools(const std::vector<std::vector<uint32_t>>& lists) {
+void InteractionContainer::orderPools(const std::vector<std::vector<uint32_t>>& lists, bool onlyNeeded) {
     for (uint32_t index = 0; index < nPools; ++index) {
         ContactPool& P = *pools[index];
-        if (P.size() == 0) continue;
+        if (P.size() == 0 || (onlyNeeded && !P.needsOrder())) continue;
         std::vector<uint32_t> to(P.size(), noContact);
         uint32_t next = 0;
         for (const auto& list : lists)

@@ -83,8 +83,8 @@ public:
     // Puts each pool's records in the order of the pairs in `lists` (the interaction loop's thread
     // lists, one after the other): the records a thread reads one after the other are then
     // neighbours, and no cache line holds records of two threads (appended in parallel, they
-    // were interleaved).
-    void orderPools(const std::vector<std::vector<uint32_t>>& lists);
+    // were interleaved). onlyNeeded: only the pools whose ContactPool::needsOrder() says so.
+    void orderPools(const std::vector<std::vector<uint32_t>>& lists, bool onlyNeeded = false);
     // Before the loop's parallel part: objects Python changed (geom, phys set) or let go.
     void syncObjects();
     long long objectsWrites = -1; // externalWrites() at the last syncObjects()

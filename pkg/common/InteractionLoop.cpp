@@ -583,26 +583,12 @@ void InteractionLoop::action() {
     if (threadPairsFor != intrs.changes || threadPairsScene != s.serial || threadPairsBodies != bodies.size()
             || threadPairsCount != intrs.size() || (int)threadPairs.size() != threads)
         assignPairsToThreads(threads);
-    { // The pools in the order of the thread lists again (InteractionContainer::orderPools) when
-      // - many contacts were made since they last were (the first step of a dense packing): made in
-      //   parallel, the records of two threads were interleaved, and a cache line written by both
-      //   went back and forth between the cores;
-      // - or, in pools larger than the caches, one record in 16 is out of that order: appended, or
-      //   moved into the slot of a contact that ended. The loop then read those records at random
-      //   instead of one after the other: in the DEM8 drum (contacts end as the bed loosens) a step
-      //   took about 15 % longer after 1 000 steps. (Reordering 80 000 records: about 12 ms, a step's
-      //   time, every 100-300 steps there.)
-        size_t appended = 0, placed = 0, live = 0, bytes = 0;
-        for (size_t p = 0; p < intrs.poolCount(); ++p) {
-            const ContactPool& P = *intrs.pools[p];
-            appended += P.appendsSinceOrder;
-            placed += P.appendsSinceOrder + P.movesSinceOrder;
-            live += P.size();
-            bytes += P.size() * P.stride;
+    // the pools whose records drifted out of the order of the thread lists: in that order again
+    for (size_t p = 0; p < intrs.poolCount(); ++p)
+        if (intrs.pools[p]->needsOrder()) {
+            intrs.orderPools(threadPairs, true);
+            break;
         }
-        constexpr size_t cacheBytes = size_t(8) << 20; // (beyond it, a random read here costs about 10x one within 4 MB)
-        if ((live >= 1024 && 4 * appended > live) || (bytes > cacheBytes && 16 * placed > live)) intrs.orderPools(threadPairs);
-    }
     prepareSkin(quick);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)
     Real displacement2 = skinRef ? facetDisplacement2() : 0; // D²

@@ -99,3 +99,34 @@ TEST(ContactPool, OrderingFollowsTheListsAndKeepsEachContactsValues) {
     EXPECT_EQ(P.appendsSinceOrder, 0u);
     EXPECT_EQ(P.movesSinceOrder, 0u);
 }
+
+TEST(ContactPool, NeedsOrderAfterManyAppendsOrWhenALargePoolDrifted) {
+    registerAllClasses();
+    ContactPool pool(info(typeid(ScGeom)), info(typeid(FrictPhys)));
+    const FrictPhys p;
+    const ScGeom g;
+    auto identity = [&pool] {
+        std::vector<uint32_t> to(pool.size());
+        for (size_t s = 0; s < to.size(); ++s) to[s] = (uint32_t)s;
+        pool.permute(to);
+    };
+    for (int i = 0; i < 1000; ++i) pool.append(ContactPool::Header{i, i + 1, (uint32_t)i, 0, 0}, g, p);
+    EXPECT_FALSE(pool.needsOrder()); // (small pools: not worth it)
+    for (int i = 1000; i < 2000; ++i) pool.append(ContactPool::Header{i, i + 1, (uint32_t)i, 0, 0}, g, p);
+    EXPECT_TRUE(pool.needsOrder()); // many appended since the last order
+    identity();
+    EXPECT_FALSE(pool.needsOrder());
+    EXPECT_EQ(pool.appendsSinceOrder + pool.movesSinceOrder, 0u);
+    // a pool beyond 8 MB in order, then records moved into the slots of removed ones
+    const size_t large = (size_t(9) << 20) / pool.stride; // (above 8 MB also after the removals)
+    for (size_t i = pool.size(); i < large; ++i) pool.append(ContactPool::Header{(int)i, (int)i + 1, (uint32_t)i, 0, 0}, g, p);
+    identity();
+    size_t moved = 0;
+    for (size_t s = 0; 16 * moved <= large - moved; s += 2) moved += pool.removeAt(s);
+    EXPECT_EQ(pool.movesSinceOrder, moved);
+    EXPECT_TRUE(pool.needsOrder()); // one record in 16 out of place
+    identity();
+    EXPECT_FALSE(pool.needsOrder());
+    pool.removeAt(0); // one more moved: far from one in 16
+    EXPECT_FALSE(pool.needsOrder());
+}
