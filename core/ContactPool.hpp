@@ -58,7 +58,7 @@ public:
     // - or, in a pool larger than the caches, one record in 16 is out of that order: the loop then read
     //   those records at random instead of one after the other (in the DEM8 drum, where contacts end as
     //   the bed loosens, a step took about 15 % longer after 1 000 steps; reordering its 80 000 records
-    //   takes about a step's time, every 100-300 steps there).
+    //   takes about a step's time, every 60-300 steps there).
     bool needsOrder() const {
         constexpr size_t cacheBytes = size_t(8) << 20; // (beyond it, a random read costs about 10x one within 4 MB here)
         return (count >= 1024 && 4 * appendsSinceOrder > count) || (count * stride > cacheBytes && 16 * (appendsSinceOrder + movesSinceOrder) > count);
