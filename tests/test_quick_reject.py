@@ -86,3 +86,41 @@ def test_turning_facets_keep_the_skin_and_change_nothing(mindlin):
     fast, general = turning_drum(True, mindlin), turning_drum(False, mindlin)
     assert fast[2] > 20  # contacts with the drum and between spheres
     assert fast == general
+
+
+def test_turning_facets_do_not_make_sphere_pairs_tested_again():
+    """The skin bounds the motion of the spheres and of the facets apart: a pair of two spheres is
+    tested again only once the spheres moved, whatever the facets did (a facet-sphere pair, once the
+    facet or the sphere moved). Spheres at rest in a fast-turning drum: the potential pairs of two
+    spheres are left out at every step, while the drum's facets go on turning."""
+    import math
+    O.reset()
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    R, L, r = 0.1, 0.04, 0.005
+    drum = O.bodies.append(geom.facetCylinder((0, 0, 0), R, L, orientation=Quaternion((1, 0, 0), math.pi / 2),
+                                              segmentsNumber=24, wallMask=7, fixed=True))
+    # a cubic lattice of spheres 0.2 r apart (potential pairs: within the collider's verletDist), at rest
+    spheres = O.bodies.append([sphere((x * 2.2 * r, y * 2.2 * r, z * 2.2 * r), r)
+                               for x in range(-4, 5) for y in range(-1, 2) for z in range(-4, 5)])
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                           [Law2_ScGeom_FrictPhys_CundallStrack()])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()], verletDist=0.5 * r), loop,
+                 RotationEngine(ids=drum, rotationAxis=(0, 1, 0), rotateAroundZero=True, zeroPoint=(0, 0, 0), angularVelocity=2.5),
+                 NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 0.5 * PWaveTimeStep()
+    first = set(drum)
+    O.run(1, True)
+    pairs = list(O.interactions.all(False))
+    spherePairs = [i for i in pairs if i.id1 not in first and i.id2 not in first]
+    facetPairs = [i for i in pairs if i.id1 in first or i.id2 in first]
+    assert len(spherePairs) > 500 and O.interactions.countReal() == 0  # 0.2 r apart: none touches
+    assert loop.pairsTested == len(pairs)  # a new skin: every pair tested
+    rim = tuple(O.bodies[drum[0]].state.pos)
+    for _ in range(40):
+        O.run(5, True)
+        assert O.interactions.countReal() == 0
+        assert loop.pairsTested <= len(facetPairs), "pairs of two spheres at rest were tested again"
+    assert all(b.state.vel.norm() == 0 for b in (O.bodies[i] for i in spheres))
+    # a facet moved by more than the spheres' gaps (0.2 r): a bound D of the motion of every body,
+    # facets included, would have had every pair of spheres tested again once D reached 0.1 r
+    assert (O.bodies[drum[0]].state.pos - Vector3(*rim)).norm() > 0.2 * r

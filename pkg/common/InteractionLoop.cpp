@@ -142,7 +142,12 @@ void InteractionLoop::prepareSkin(bool quick) {
     if (keep) return;
     // a new epoch: positions now are the reference; every pair is tested in this step
     skin.fresh = true;
-    skin.refPos = std::make_shared<const std::vector<Vector3r>>(shapePos, shapePos + n);
+    // (of the spheres only: the pairs it skips are of two spheres, or of a facet and a sphere, whose
+    // facet's motion is facetDisplacement2; other bodies are NaN, which the largest displacement ignores)
+    auto ref = std::make_shared<std::vector<Vector3r>>(shapePos, shapePos + n);
+    for (size_t id = 0; id < n; ++id)
+        if (!(shapeCache.radius[id] > 0)) (*ref)[id] = Vector3r::Constant(NaN);
+    skin.refPos = ref;
     // the integrator measures D from them too (a tag unique to this epoch of this loop)
     static std::atomic<long long> epochs{0};
     skin.tag = ++epochs;
@@ -157,8 +162,12 @@ void InteractionLoop::prepareSkin(bool quick) {
     skin.gap.resize(threadPairs.size());
     skin.todo.resize(threadPairs.size());
     skin.near.resize(threadPairs.size());
-    skin.nearLimit.assign(threadPairs.size(), -Inf);
-    for (size_t list = 0; list < threadPairs.size(); ++list) skin.gap[list].assign(threadPairs[list].size(), -Inf);
+    skin.nearLimit.assign(threadPairs.size(), {-Inf, -Inf});
+    skin.withFacet.resize(threadPairs.size());
+    for (size_t list = 0; list < threadPairs.size(); ++list) {
+        skin.gap[list].assign(threadPairs[list].size(), -Inf);
+        skin.withFacet[list].assign(threadPairs[list].size(), 0);
+    }
     skin.facetPlanes = facetPlanes;
     skin.facetOri = facetOri;
     skin.sphereSphereReach = sphereSphereReach;
@@ -273,12 +282,13 @@ static inline void prefetchObject(const void* p) {
 // runs of one (IGeom, IPhys) pair in list order (forces are added in the order of the list).
 // Existing contacts are reached through the container's columns (ids, geometry and physics
 // objects), never through their Interaction.
-void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
+void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     Scene& s = *scene;
     InteractionContainer& intrs = s.interactions;
     const std::vector<uint32_t>& pairs = threadPairs[list];
     float* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
     const bool fuse = fusedPasses;
     const int* shapeIndex = shapeCache.shapeIndex.data();
@@ -337,7 +347,11 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, R
         const long k = pairs[i];
         Real gap;
         if (quick && !wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
-            if (gaps) gaps[i] = floatBelow(gap - twiceD);
+            if (gaps) {
+                const bool facet = (shapeRadius[ids[2 * k]] < 0) | (shapeRadius[ids[2 * k + 1]] < 0); // (a facet's radius is its code)
+                gaps[i] = floatBelow(gap - twiceD[facet]);
+                withFacet[i] = facet;
+            }
             continue; // still apart
         }
         if (gaps) gaps[i] = -Inf; // tested again at the next step
@@ -591,7 +605,9 @@ void InteractionLoop::action() {
         }
     prepareSkin(quick);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)
-    Real displacement2 = skinRef ? facetDisplacement2() : 0; // D²
+    // D² of the spheres, and of the facets
+    Real displacement2 = 0;
+    const Real facetDisplacement = skinRef ? facetDisplacement2() : 0;
     const Scene::PositionMirror& mirror = s.positionMirror;
     if (skinRef && quickFromMirror && mirror.maxMovedTag == skin.tag && mirror.referenceTag == skin.tag) { // found by the integrator with these positions
         displacement2 = std::max(displacement2, mirror.maxMoved2);
@@ -620,12 +636,14 @@ void InteractionLoop::action() {
     if (skinRef) { // D: each thread over the bodies it integrates, then the largest (exact: any order)
         const auto range = myThreadRange((long)shapeCache.radius.size());
         Real mine = 0;
-        for (long id = range.first; id < range.second; ++id) mine = std::max(mine, (shapePos[id] - skinRef[id]).squaredNorm()); // (holes: NaN, ignored)
+        for (long id = range.first; id < range.second; ++id) mine = std::max(mine, (shapePos[id] - skinRef[id]).squaredNorm()); // (holes and bodies other than spheres: NaN, ignored)
 #pragma omp critical(yadeSkin)
         displacement2 = std::max(displacement2, mine);
 #pragma omp barrier
     }
-    const Real twiceD = 2 * std::sqrt(displacement2), skipAbove = twiceD + skin.tolerance;
+    // 2D of a pair of spheres, and of a facet and a sphere (each moved at most the larger D); their margins
+    const Real twiceD[2] = {2 * std::sqrt(displacement2), 2 * std::sqrt(std::max(displacement2, facetDisplacement))};
+    const Real skipAbove[2] = {twiceD[0] + skin.tolerance, twiceD[1] + skin.tolerance};
     // entries j0 .. j1-1 of list `list` (positions in its todo, or in the list without the skin),
     // batch by batch
     auto process = [&](int list, size_t j0, size_t j1) {
@@ -642,24 +660,25 @@ void InteractionLoop::action() {
         if (gaps) {
             std::vector<unsigned>& entries = skin.todo[list];
             std::vector<unsigned>& near = skin.near[list];
-            Real& nearLimit = skin.nearLimit[list];
+            const unsigned char* withFacet = skin.withFacet[list].data();
+            std::array<Real, 2>& nearLimit = skin.nearLimit[list];
             size_t count = 0;
-            if (skipAbove <= nearLimit) { // the entries left out of near are still beyond reach
+            if (skipAbove[0] <= nearLimit[0] && skipAbove[1] <= nearLimit[1]) { // the entries left out of near are still beyond reach
                 entries.resize(near.size());
                 for (const unsigned i : near) {
                     entries[count] = i;
-                    count += !(gaps[i] > skipAbove);
+                    count += !(gaps[i] > skipAbove[withFacet[i]]);
                 }
             } else { // all, keeping those within twice this step's margin as near
-                nearLimit = 2 * skipAbove;
+                nearLimit = {2 * skipAbove[0], 2 * skipAbove[1]};
                 entries.resize(pairs.size());
                 near.resize(pairs.size());
                 size_t nearCount = 0;
                 for (size_t i = 0; i < pairs.size(); ++i) {
                     entries[count] = (unsigned)i;
-                    count += !(gaps[i] > skipAbove);
+                    count += !(gaps[i] > skipAbove[withFacet[i]]);
                     near[nearCount] = (unsigned)i;
-                    nearCount += !(gaps[i] > nearLimit);
+                    nearCount += !(gaps[i] > nearLimit[withFacet[i]]);
                 }
                 near.resize(nearCount);
             }
@@ -701,6 +720,8 @@ void InteractionLoop::action() {
         }
     }
     }
+    pairsTested = 0;
+    for (const auto& w : work) pairsTested += (long long)w->count;
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
     if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);
 }

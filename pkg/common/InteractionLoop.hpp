@@ -7,6 +7,7 @@
 #include <core/ForceContainer.hpp>
 #include <core/LawDispatcher.hpp>
 #include <lib/base/ChunkQueue.hpp>
+#include <array>
 #include <memory>
 #include <set>
 #include <string>
@@ -25,6 +26,7 @@ public:
     std::shared_ptr<LawDispatcher> lawDispatcher = std::make_shared<LawDispatcher>();
     bool fastPath = true;
     bool fusedPasses = true;
+    long long pairsTested = 0;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
@@ -32,6 +34,7 @@ public:
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
         v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack or Law2_ScGeom_MindlinPhys_Mindlin): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
+        v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
     }
     void action() override;
     // Throws std::invalid_argument explaining a broken chain (an Ig2 or Ip2 product no Law2 accepts).
@@ -96,8 +99,10 @@ private:
     // as long as every body stays within D' with 2D + 2D' < g (each body moved at most D + D'
     // since). Each entry of a thread's list keeps g - 2D from its last test, and is skipped while
     // that exceeds 2D' (plus a rounding margin): one contiguous read instead of the two bodies'
-    // positions. An epoch ends when the interactions, the bodies, anything written from Python,
-    // a facet's plane or the functors' reach change.
+    // positions. D is kept apart for the pairs of two spheres (the spheres' motion) and for those
+    // of a facet and a sphere (with the facets' motion, facetDisplacement2): a turning drum does not
+    // make the pairs of spheres tested again. An epoch ends when the interactions, the bodies,
+    // anything written from Python, the set of facets or the functors' reach change.
     struct Skin {
         // each body's position at the start of the epoch (shared with Scene::positionMirror.reference)
         std::shared_ptr<const std::vector<Vector3r>> refPos = std::make_shared<std::vector<Vector3r>>();
@@ -107,7 +112,9 @@ private:
         // the list (the others were not tested since, so their values did not change): while the
         // margin 2D' stays below nearLimit only these are looked at (a full pass when D doubled).
         std::vector<std::vector<unsigned>> near;
-        std::vector<Real> nearLimit;             // (-Inf: none yet in this epoch)
+        std::vector<std::array<Real, 2>> nearLimit; // of the pairs of spheres, and with a facet (-Inf: none yet in this epoch)
+        // per thread list, per entry: 1 if the pair is of a facet and a sphere (its g - 2D is of their D)
+        std::vector<std::vector<unsigned char>> withFacet;
         std::vector<FacetPlane> facetPlanes; // facet planes at the start of the epoch
         std::vector<Quaternionr> facetOri;    // and their orientations
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
@@ -166,7 +173,7 @@ private:
         Interaction standIn; // what the Ip2 functors get for a pair without object
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
-    void processBatch(int list, size_t j0, size_t j1, bool quick, Real twiceD,
+    void processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
             std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error);
     static int threadNumber() {
 #ifdef _OPENMP
