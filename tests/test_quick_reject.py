@@ -91,7 +91,7 @@ def test_turning_facets_keep_the_skin_and_change_nothing(mindlin):
 def test_turning_facets_do_not_make_sphere_pairs_tested_again():
     """The skin bounds the motion of the spheres and of the facets apart: a pair of two spheres is
     tested again only once the spheres moved, whatever the facets did (a facet-sphere pair, once the
-    facet or the sphere moved). Spheres at rest in a fast-turning drum: the potential pairs of two
+    facet or the sphere moved). Spheres at rest in a turning drum: the potential pairs of two
     spheres are left out at every step, while the drum's facets go on turning."""
     import math
     O.reset()
