@@ -148,6 +148,7 @@ void NewtonIntegrator::action() {
     const BodyStore::Columns hot = s.bodies.hot().columns();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
+    spinning.resize(n);
     const auto& ref = s.positionMirror.reference;
     const Vector3r* reference = ref && (long)ref->size() == n ? ref->data() : nullptr;
     Real maxMoved2 = 0;
@@ -183,107 +184,122 @@ void NewtonIntegrator::action() {
     Vector3r* const mir = mirror.data();
     const Vector3r* const F = forces;
     const Vector3r* const T = torques;
-    for (long id = lo; id < hi; ++id) {
-        if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
-            mir[id] = Vector3r::Constant(NaN);
-            continue;
+    char* const spins = spinning.data();
+    // (a block of bodies at a time: the second loop finds their spins and orientations in cache)
+    for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
+        const long b1 = std::min(hi, b0 + chunkBodies);
+        for (long id = b0; id < b1; ++id) {
+            spins[id] = false;
+            if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
+                mir[id] = Vector3r::Constant(NaN);
+                continue;
+            }
+            Vector3r& statePos = h.pos[id];
+            mir[id] = statePos; // replaced below by the new position
+            if (moveMask != -1 && !(h.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
+            const int blocked = h.blockedDOFsMask[id];
+            const Real mass = h.mass[id];
+            const Vector3r& inertia = h.inertia[id];
+            const bool dynamic = blocked != State::DOF_ALL;
+            Vector3r vel = h.vel[id], angVel = h.angVel[id];
+            Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
+            Quaternionr newOri; // (an aspherical body's, when turned)
+            bool turned = false;
+            if (dynamic) {
+                const bool damped = lambda != 0 && h.isDamped[id];
+                Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
+                const Vector3r gFree = freeGravity(g, blocked);
+                if (gravityDamped) accel += gFree;
+                const Vector3r undamped = accel;
+                if (damped) damp(accel, vel, dt, lambda);
+                if (!gravityDamped) accel += gFree;
+                // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
+                const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
+                // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
+                if (__builtin_expect(unequalMoments(inertia), 0) && aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
+                        && (inertia.array() > 0).all()) {
+                    const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
+                    newOri = t.ori;
+                    turned = true;
+                    if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
+                    if (energy) {
+                        const Vector3r v = vel + 0.5 * dt * accel;
+                        eGrav = -mass * gFree.dot(vel) * dt;
+                        const Real trans = 0.5 * mass * v.squaredNorm();
+                        if (split) {
+                            eKin = trans;
+                            eKinRot = t.kinetic;
+                        } else
+                            eKin = trans + t.kinetic;
+                        eDamp = -dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
+                    }
+                    vel += dt * accel;
+                    angVel = t.angVel;
+                } else {
+                    Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
+                    const Vector3r angUndamped = angAccel;
+                    if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
+                    if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
+                        const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
+                        eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
+                        if (split) {
+                            eKin = 0.5 * mass * v.squaredNorm();
+                            eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
+                        } else
+                            eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
+                        eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
+                    }
+                    vel += dt * accel;
+                    angVel += dt * angAccel;
+                }
+            }
+            const Vector3r pos = statePos + vel * dt;
+            const Real spin2 = angVel.squaredNorm(); // (finite where the turn's angle |angVel|·dt is)
+            const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
+            if (!std::isfinite(pos.sum() + vel.sum() + spin2 + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
+    #pragma omp critical(yadeDiverged)
+                diverged = std::max(diverged, id);
+                continue;
+            }
+            h.vel[id] = vel;
+            h.angVel[id] = angVel;
+            statePos = pos;
+            mir[id] = pos;
+            if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
+                e.grav += eGrav;
+                e.kin += eKin;
+                e.kinRot += eKinRot;
+                e.damp += eDamp;
+                e.any = true;
+            }
+            maxV2 = std::max(maxV2, vel.squaredNorm());
+            if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
+                h.ori[id] = newOri.normalized();
+            else
+                spins[id] = true;
         }
-        Vector3r& statePos = h.pos[id];
-        mir[id] = statePos; // replaced below by the new position
-        if (moveMask != -1 && !(h.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
-        const int blocked = h.blockedDOFsMask[id];
-        const Real mass = h.mass[id];
-        const Vector3r& inertia = h.inertia[id];
-        const bool dynamic = blocked != State::DOF_ALL;
-        Vector3r vel = h.vel[id], angVel = h.angVel[id];
-        Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
-        Quaternionr newOri; // (an aspherical body's, when turned)
-        bool turned = false;
-        if (dynamic) {
-            const bool damped = lambda != 0 && h.isDamped[id];
-            Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
-            const Vector3r gFree = freeGravity(g, blocked);
-            if (gravityDamped) accel += gFree;
-            const Vector3r undamped = accel;
-            if (damped) damp(accel, vel, dt, lambda);
-            if (!gravityDamped) accel += gFree;
-            // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
-            const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
-            // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
-            if (__builtin_expect(unequalMoments(inertia), 0) && aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
-                    && (inertia.array() > 0).all()) {
-                const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
-                newOri = t.ori;
-                turned = true;
-                if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
-                if (energy) {
-                    const Vector3r v = vel + 0.5 * dt * accel;
-                    eGrav = -mass * gFree.dot(vel) * dt;
-                    const Real trans = 0.5 * mass * v.squaredNorm();
-                    if (split) {
-                        eKin = trans;
-                        eKinRot = t.kinetic;
-                    } else
-                        eKin = trans + t.kinetic;
-                    eDamp = -dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
-                }
-                vel += dt * accel;
-                angVel = t.angVel;
-            } else {
-                Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
-                const Vector3r angUndamped = angAccel;
-                if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
-                if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                    const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
-                    eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
-                    if (split) {
-                        eKin = 0.5 * mass * v.squaredNorm();
-                        eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
-                    } else
-                        eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
-                    eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
-                }
-                vel += dt * accel;
-                angVel += dt * angAccel;
+        // The other bodies' orientations, in a loop of their own: each one's turn waits for its spin,
+        // and in one loop with the rest a body's whole update was one chain the processor could not
+        // overlap with the next body's (this loop is short: several bodies are in flight at once).
+        for (long id = b0; id < b1; ++id) {
+            if (!spins[id]) continue;
+            const Vector3r& angVel = h.angVel[id];
+            const Real angle = angVel.norm() * dt;
+            if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
+                Real sincHalf, cosHalf;
+                sincCosHalf(angle, sincHalf, cosHalf);
+                const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
+                const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
+                // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
+                // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
+                // length from Python gets the exact division)
+                const Real n2 = q.coeffs().squaredNorm();
+                h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
             }
         }
-        const Vector3r pos = statePos + vel * dt;
-        const Real angVelNorm = angVel.norm();
-        const Real angle = angVelNorm * dt;
-        const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-        if (!std::isfinite(pos.sum() + vel.sum() + angle + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
-#pragma omp critical(yadeDiverged)
-            diverged = std::max(diverged, id);
-            continue;
-        }
-        h.vel[id] = vel;
-        h.angVel[id] = angVel;
-        statePos = pos;
-        mir[id] = pos;
-        if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
-            e.grav += eGrav;
-            e.kin += eKin;
-            e.kinRot += eKinRot;
-            e.damp += eDamp;
-            e.any = true;
-        }
-        maxV2 = std::max(maxV2, vel.squaredNorm());
-        if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
-            h.ori[id] = newOri.normalized();
-        else if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
-            Real sincHalf, cosHalf;
-            sincCosHalf(angle, sincHalf, cosHalf);
-            const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
-            const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
-            // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
-            // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
-            // length from Python gets the exact division)
-            const Real n2 = q.coeffs().squaredNorm();
-            h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
-        }
+        if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
+            for (long id = b0; id < b1; ++id) maxMoved2 = std::max(maxMoved2, (mir[id] - reference[id]).squaredNorm());
     }
-    if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
-        for (long id = lo; id < hi; ++id) maxMoved2 = std::max(maxMoved2, (mir[id] - reference[id]).squaredNorm());
     };
     if (!(dt > crit.dt)) { // (the same answer in every thread)
         ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;

@@ -53,6 +53,7 @@ private:
         bool any = false; // a dynamic body was integrated
     };
     std::vector<std::vector<EnergySums>> chunkSums; // per thread range, per chunk
+    std::vector<char> spinning; // per body, in a step: whether its orientation is turned by its spin (the second loop)
     struct EnergyTerms {
         int grav = -1, kin = -1, kinRot = -1, damp = -1;
     };
