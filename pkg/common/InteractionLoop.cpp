@@ -247,13 +247,22 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     // container's order (the collider's sweep along x) they read bodies anywhere in the scene, and
     // at 50 000 spheres most of those reads missed the caches. (Bodies read from a file are in no
     // spatial order, so the larger id of each pair is anywhere: processBatch and the fused passes
-    // load those ahead. A spatial order of the pairs (Morton code of the bodies) was tried on the
-    // DEM8 drum: about 10 % slower than this, as the smaller ids no longer come in order.)
+    // load those ahead, processBatch only where a list's pairs are so (threadPairsScattered: in a
+    // lattice built in order those loads cost more than they saved). A spatial order of the pairs
+    // (Morton code of the bodies) was tried on the DEM8 drum: about 10 % slower than this, as the
+    // smaller ids no longer come in order.)
     std::vector<uint32_t>& start = assignScratch.start;
     std::vector<uint32_t>& sorted = assignScratch.sorted;
-    for (auto& list : threadPairs) {
+    threadPairsScattered.assign(threads, false);
+    for (int t = 0; t < threads; ++t) {
+        std::vector<uint32_t>& list = threadPairs[t];
         start.assign(nBodies + 1, 0);
-        for (uint32_t k : list) ++start[std::min(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1]) + 1];
+        unsigned long long spread = 0; // sum of |id2 - id1|
+        for (uint32_t k : list) {
+            ++start[std::min(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1]) + 1];
+            spread += (unsigned long long)std::abs((long long)intrs.pairIds[2 * k + 1] - intrs.pairIds[2 * k]);
+        }
+        threadPairsScattered[t] = spread > scatteredSpread * list.size();
         for (long id = 0; id < nBodies; ++id) start[id + 1] += start[id];
         sorted.resize(list.size());
         for (uint32_t k : list) sorted[start[std::min(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])]++] = k;
@@ -323,17 +332,18 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
     // the dispatch entry of the last shape-class pair (consecutive pairs are mostly of one kind)
     int lastC1 = -1, lastC2 = -1;
     const DispatchTable2D<IGeomFunctor>::Entry* lastEntry = nullptr;
+    const bool ahead = threadPairsScattered[list]; // (else the hardware's own prefetching does better)
     // 1. the pairs to compute, and their Ig2 functor
     for (size_t j = j0; j < j1; ++j) {
         // (what the pairs a few places ahead read, loaded in advance: in a scene whose body ids are
         // in no spatial order, e.g. spheres read from a file, these reads are all over memory)
-        if (j + 2 * pairLookahead < j1) {
+        if (ahead && j + 2 * pairLookahead < j1) {
             const long far = pairs[todo ? todo[j + 2 * pairLookahead] : j + 2 * pairLookahead];
             __builtin_prefetch(&ids[2 * far]);
             __builtin_prefetch(&wasReal[far]);
             __builtin_prefetch(&contactOf[far]);
         }
-        if (j + pairLookahead < j1) {
+        if (ahead && j + pairLookahead < j1) {
             const long near = pairs[todo ? todo[j + pairLookahead] : j + pairLookahead];
             for (const Body::id_t id : {ids[2 * near], ids[2 * near + 1]}) {
                 __builtin_prefetch(&shapeIndex[id]);

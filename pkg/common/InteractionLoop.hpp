@@ -138,6 +138,10 @@ private:
     long long threadPairsFor = -1, threadPairsScene = -1; // O.interactions' change counter, Scene::serial when built
     long long threadPairsBuild = 0;                         // incremented by every rebuild
     size_t threadPairsBodies = 0, threadPairsCount = 0;     // O.bodies' and O.interactions' sizes then
+    // per list: whether its pairs' two ids are far apart (a mean |id2 - id1| above scatteredSpread,
+    // as for bodies read from a file in no spatial order); then processBatch loads their entries ahead
+    std::vector<char> threadPairsScattered;
+    static constexpr unsigned long long scatteredSpread = 2048;
     void assignPairsToThreads(int threads);
     // Work stealing within a step (action()): per thread list, its entries to test and their chunks.
     static constexpr size_t chunkEntries = 256;
