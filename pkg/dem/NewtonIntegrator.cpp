@@ -256,8 +256,11 @@ void NewtonIntegrator::action() {
             const Vector3r pos = statePos + vel * dt;
             const Real spin2 = angVel.squaredNorm(); // (finite where the turn's angle |angVel|·dt is)
             const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-            if (!std::isfinite(pos.sum() + vel.sum() + spin2 + eKin + eKinRot + eDamp + eGrav + oriNorm2) || !(oriNorm2 > 0)) { // stability guard: keep the last finite state
-    #pragma omp critical(yadeDiverged)
+            // stability guard: keep the last finite state (the terms summed as a tree, not one after the other: the
+            // branch waits for the sum, and a chain of twelve additions held every body's update back)
+            const Real energies = (eKin + eKinRot) + (eDamp + eGrav);
+            if (!std::isfinite(((pos[0] + pos[1]) + (pos[2] + vel[0])) + ((vel[1] + vel[2]) + (spin2 + oriNorm2)) + energies) || !(oriNorm2 > 0)) {
+#pragma omp critical(yadeDiverged)
                 diverged = std::max(diverged, id);
                 continue;
             }
