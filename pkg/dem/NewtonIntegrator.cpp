@@ -36,6 +36,29 @@ static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
     }
 }
 
+// The spherical rotation update (3.5.9) of bodies b0 .. b1-1 whose spins[id] is set: each turned by
+// angVel·dt about angVel. In a loop of its own, after the one that updates the velocities: each turn
+// waits for its spin, and in one loop with the rest a body's whole update was one chain of
+// dependent operations the processor could not overlap with the next body's (this loop is short:
+// several bodies are in flight at once).
+static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0, long b1, Real dt) {
+    for (long id = b0; id < b1; ++id) {
+        if (!spins[id]) continue;
+        const Vector3r& angVel = h.angVel[id];
+        const Real angle = angVel.norm() * dt;
+        if (angle == 0) continue;
+        Real sincHalf, cosHalf;
+        sincCosHalf(angle, sincHalf, cosHalf);
+        const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
+        const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
+        // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
+        // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
+        // length from Python gets the exact division)
+        const Real n2 = q.coeffs().squaredNorm();
+        h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
+    }
+}
+
 // Euler's equations (3.5.10) in the body's principal frame: the angular acceleration of the spin w
 // under the torque t, I the principal moments of inertia.
 static inline Vector3r eulerAccel(const Vector3r& w, const Vector3r& t, const Vector3r& I) {
@@ -279,27 +302,9 @@ void NewtonIntegrator::action() {
             if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
                 h.ori[id] = newOri.normalized();
             else
-                spins[id] = true;
+                spins[id] = true; // (turned below)
         }
-        // The other bodies' orientations, in a loop of their own: each one's turn waits for its spin,
-        // and in one loop with the rest a body's whole update was one chain the processor could not
-        // overlap with the next body's (this loop is short: several bodies are in flight at once).
-        for (long id = b0; id < b1; ++id) {
-            if (!spins[id]) continue;
-            const Vector3r& angVel = h.angVel[id];
-            const Real angle = angVel.norm() * dt;
-            if (angle != 0) { // spherical rotation update (3.5.9): rotate by angVel·dt about angVel
-                Real sincHalf, cosHalf;
-                sincCosHalf(angle, sincHalf, cosHalf);
-                const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
-                const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
-                // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
-                // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
-                // length from Python gets the exact division)
-                const Real n2 = q.coeffs().squaredNorm();
-                h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
-            }
-        }
+        turnSpheres(h, spins, b0, b1, dt);
         if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
             for (long id = b0; id < b1; ++id) maxMoved2 = std::max(maxMoved2, (mir[id] - reference[id]).squaredNorm());
     }
