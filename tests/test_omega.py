@@ -4,6 +4,7 @@ O.bodies.insertAtId.
 
 Figures marked "reference" were printed by the reference (yade-double -n -x) on the same script."""
 
+import json
 import math
 import os
 import pathlib
@@ -465,3 +466,46 @@ def test_forces_read_and_added_while_running_in_the_background(y):
     v = O.bodies[0].state.vel[0]
     assert any(v == pytest.approx(k * O.dt, rel=1e-12) for k in range(O.iter - it0 - 1, O.iter - before + 1))
     assert O.bodies[1].state.vel == y.Vector3(0, 0, 0)
+
+
+# ------------------------------------------------------------------ the engines at start-up
+
+def test_default_engines_at_start_up(tmp_path):
+    """A script starts with the reference's default engines (its simple-scene-default-engines.py example
+    sets typedEngine('NewtonIntegrator').gravity and appends bodies without setting O.engines); O.reset()
+    empties the list. The figures after 11 steps are the reference's run of the same lines: two default
+    spheres of radius 1 overlapping by 0.1 fly apart at 4.41 m/s (the step differs by 0.27 %: the reference
+    uses 1.41044 for the manual's sqrt(2) in eq. 3.5.18, doc/compatibility.md)."""
+    r, _ = run_script(tmp_path, """
+        import json
+        names = [e.__class__.__name__ for e in O.engines]
+        labels = [e.label for e in O.engines]
+        il = O.engines[2]
+        res = dict(names=names, labels=labels, dynDt=O.dynDt, dt0=O.dt, damping=newton.damping,
+                   bo1=[f.__class__.__name__ for f in collider.boundDispatcher.functors],
+                   ig2=[f.__class__.__name__ for f in il.geomDispatcher.functors],
+                   ip2=[f.__class__.__name__ for f in il.physDispatcher.functors],
+                   law=[f.__class__.__name__ for f in il.lawDispatcher.functors],
+                   interval=timeStepper.timeStepUpdateInterval, coeff=timeStepper.timestepSafetyCoefficient,
+                   typed=typedEngine('NewtonIntegrator') is newton)
+        O.bodies.append(sphere((0, 0, 0), 1)); O.bodies.append(sphere((0, 0, 1.9), 1))
+        O.run(11, True)
+        res.update(dt=O.dt, z=O.bodies[1].state.pos[2], vz=O.bodies[1].state.vel[2], contacts=O.interactions.countReal())
+        O.reset()
+        res.update(afterReset=len(O.engines))
+        print('RES', json.dumps(res))
+    """)
+    assert r.returncode == 0, r.stderr[-2000:]
+    res = json.loads(r.stdout.split('RES ', 1)[1])
+    assert res['names'] == ['ForceResetter', 'InsertionSortCollider', 'InteractionLoop', 'GlobalStiffnessTimeStepper', 'NewtonIntegrator']
+    assert res['labels'] == ['', 'collider', 'interactionLoop', 'timeStepper', 'newton']
+    assert res['dynDt'] is True and res['dt0'] == 1e-8 and res['damping'] == 0.2 and res['typed']
+    assert res['bo1'] == ['Bo1_Sphere_Aabb', 'Bo1_Facet_Aabb', 'Bo1_Box_Aabb']
+    assert res['ig2'] == ['Ig2_Sphere_Sphere_ScGeom', 'Ig2_Facet_Sphere_ScGeom', 'Ig2_Box_Sphere_ScGeom']
+    assert res['ip2'] == ['Ip2_FrictMat_FrictMat_FrictPhys'] and res['law'] == ['Law2_ScGeom_FrictPhys_CundallStrack']
+    assert (res['interval'], res['coeff']) == (10, 0.8)
+    # the reference: dt 0.0230934547513, z 3.0204, vz 4.41052; here sqrt(2) for its 1.41044
+    assert res['dt'] == pytest.approx(0.0230934547513 * 2 ** 0.5 / 1.41044, rel=1e-9)
+    assert res['contacts'] == 0 and res['vz'] == pytest.approx(4.41052, rel=5e-3)
+    assert res['z'] == pytest.approx(3.0204, rel=1e-2)
+    assert res['afterReset'] == 0

@@ -577,7 +577,16 @@ def test_time_stepper_without_contact_uses_p_wave_step():
     pw = 0.05 / math.sqrt(1e7 / 2600)
     assert PWaveTimeStep() == pytest.approx(pw, rel=1e-12)
     assert O.dt == pytest.approx(0.8 * PWaveTimeStep(), rel=1e-12)
-    assert ts.previousDt == O.dt
+    # as in the reference: the first update sets defaultDt from the P-wave step, once (a heavier
+    # sphere afterwards does not change it); previousDt is the last step found from contacts: none
+    assert ts.defaultDt == O.dt and ts.previousDt == INF
+    O.bodies[0].state.mass *= 4
+    O.dt = 1e-5
+    O.step()
+    assert O.dt == pytest.approx(0.8 * pw, rel=1e-12)
+    ts.defaultDt = 2e-5
+    O.step()
+    assert O.dt == 2e-5
 
 
 def test_time_stepper_without_contact_uses_default_dt():
@@ -586,7 +595,7 @@ def test_time_stepper_without_contact_uses_default_dt():
     ts = GlobalStiffnessTimeStepper(defaultDt=3e-5)
     O.engines = engines(timeStepper=ts)
     O.step()
-    assert O.dt == 3e-5 and ts.previousDt == 3e-5
+    assert O.dt == 3e-5 and ts.previousDt == INF  # (previousDt: the last step found from contacts, none here)
 
 
 def test_time_stepper_with_a_contact_uses_the_critical_step_by_hand():
@@ -630,7 +639,69 @@ def test_time_stepper_max_dt_caps():
     ts = GlobalStiffnessTimeStepper(defaultDt=1e-3, maxDt=2e-5)
     O.engines = engines(timeStepper=ts)
     O.step()
-    assert O.dt == 2e-5  # also caps defaultDt
+    assert O.dt == 1e-3  # maxDt caps steps found from contacts, not defaultDt (the reference: 0.001 too)
+
+
+def test_time_stepper_grows_at_most_5_percent_per_update():
+    """The contact's stiffness divided by 4 doubles the critical step: O.dt follows it 5 % per
+    update, as in the reference (1.05^4 = 1.2155 after four updates; the reference's figures on the
+    same script: 0.00186185, 0.00195495, 0.00205269, 0.00215533, 0.00226309, i.e. the same ratios)."""
+    ts = GlobalStiffnessTimeStepper()
+    tilted_contact(ts)
+    O.dt = 1e-7
+    O.step()
+    first = O.dt
+    assert first == pytest.approx(0.8 * hand_critical_step(), rel=1e-9)
+    I = O.interactions[0, 1]
+    I.phys.kn /= 4
+    I.phys.ks /= 4
+    seen = []
+    for i in range(4):
+        O.step()
+        seen.append(O.dt / first)
+        assert O.dt == ts.previousDt
+    assert seen == pytest.approx([1.05, 1.05 ** 2, 1.05 ** 3, 1.05 ** 4], rel=1e-12)
+    assert O.dt < 0.8 * hand_critical_step()
+    I.phys.kn *= 40  # stiffer: the step drops at once
+    I.phys.ks *= 40
+    O.step()
+    assert O.dt == pytest.approx(0.8 * hand_critical_step(), rel=1e-9)
+
+
+def test_time_stepper_keeps_dt_once_contacts_are_gone():
+    """Once the contacts gave a step, an update without contacts leaves O.dt as it is (the reference
+    does the same: it does not go back to the P-wave step)."""
+    ts = GlobalStiffnessTimeStepper()
+    tilted_contact(ts)
+    O.dt = 1e-7
+    O.step()
+    contact = O.dt
+    O.bodies[1].state.pos = (0, 0, 1)  # far away: the contact ends at the next step
+    O.step()
+    assert O.interactions.countReal() == 0
+    assert O.dt == contact != pytest.approx(0.8 * PWaveTimeStep())
+    O.dt = 3e-6  # what the script sets stays, too
+    O.run(3, True)
+    assert O.dt == 3e-6 and ts.previousDt == contact
+
+
+def test_time_stepper_without_spheres_leaves_dt():
+    """No sphere with an elastic material: no P-wave step to start from and nothing it would move;
+    O.dt is left as it is (the reference sets 0.8 s there)."""
+    ts = GlobalStiffnessTimeStepper()
+    O.engines = engines(timeStepper=ts)
+    O.dt = 1e-6
+    O.run(3, True)
+    assert O.dt == 1e-6 and ts.defaultDt == -1
+
+
+def test_time_stepper_accepts_the_references_other_attributes():
+    ts = GlobalStiffnessTimeStepper(parallelMode=True, viscEl=False, targetDt=2e-4, densityScaling=False)
+    assert (ts.parallelMode, ts.viscEl, ts.targetDt, ts.densityScaling) == (True, False, 2e-4, False)
+    tilted_contact(ts)
+    ts.densityScaling = True
+    with pytest.raises(ValueError, match='densityScaling is not supported'):
+        O.step()
 
 
 def test_time_stepper_inactive_leaves_dt():
@@ -692,8 +763,8 @@ def test_stiff_scene_with_time_stepper_never_trips_the_guard():
         O.run(100, True)  # a StabilityError would fail the test here
         maxContacts = max(maxContacts, O.interactions.countReal())
         dts.append(O.dt)
-        assert O.dt == pytest.approx(0.8 * hand_critical_step(), rel=1e-9) if O.interactions.countReal() \
-            else O.dt == pytest.approx(0.8 * PWaveTimeStep(), rel=1e-12)
+        if O.interactions.countReal():  # (at most the critical step: it grows 5 % per step at most)
+            assert O.dt <= 0.8 * hand_critical_step() * (1 + 1e-9)
     assert O.iter == 5000
     assert all_states_finite()
     assert maxContacts >= 40  # measured 71
@@ -873,6 +944,6 @@ def test_negative_dt_hands_the_step_to_the_time_stepper():
     O.dt = -1
     assert ts.active and O.dynDt and O.dt == 2e-6  # (set by the stepper when it runs)
     O.step()
-    assert O.dt == 3e-5 and ts.previousDt == 3e-5
+    assert O.dt == 3e-5 and ts.previousDt == INF  # (previousDt: the last step found from contacts, none here)
     with pytest.raises(ValueError):
         O.dt = float("nan")

@@ -12,14 +12,23 @@ public:
     Real defaultDt = -1;
     Real maxDt = Inf;
     Real previousDt = Inf;
+    bool parallelMode = false, densityScaling = false, viscEl = false;
+    Real targetDt = 1;
     template <class V> void visit(V& v) {
         TimeStepper::visit(v);
         v.attr("timestepSafetyCoefficient", timestepSafetyCoefficient, "O.dt = this × the critical step", Attr::positive);
-        v.attr("defaultDt", defaultDt, "Step used while there is no contact (negative: PWaveTimeStep() times the safety coefficient)");
-        v.attr("maxDt", maxDt, "Upper limit of O.dt", Attr::positive);
-        v.attr("previousDt", previousDt, "O.dt set at the previous update", Attr::readonly);
+        v.attr("defaultDt", defaultDt, "Step used while no contact ever gave one; negative: set at the first update to PWaveTimeStep() times the safety coefficient");
+        v.attr("maxDt", maxDt, "Upper limit of a step found from the contacts", Attr::positive);
+        v.attr("previousDt", previousDt, "The last step found from the contacts (a new one is at most 1.05 times it)", Attr::readonly);
+        v.attr("parallelMode", parallelMode, "Accepted for scripts written for Yade; the critical step is found in one pass here either way");
+        v.attr("densityScaling", densityScaling, "Scale the densities to reach targetDt: not supported here (True is refused at the first update)");
+        v.attr("targetDt", targetDt, "The step densityScaling would aim at", Attr::positive);
+        v.attr("viscEl", viscEl, "Accepted for scripts written for Yade: there is no ViscElPhys here, so no contact it would count");
     }
     void action() override;
+
+private:
+    bool computedOnce = false; // a step was found from the contacts: without contacts, O.dt is then left as it is
 };
 
 } // namespace yade

@@ -23,6 +23,24 @@ from ._packPredicates import *  # noqa: E402,F401,F403  (inSphere, inCylinder...
 from .pack import regularOrtho, regularHexa, filterSpherePack, cloudBestFitOBB, SpherePackIterator, SpherePack_toSimulation  # noqa: E402,F401
 from . import ymport, export  # noqa: E402,F401
 
+
+def _defaultEngines():
+    """The engines of the scene at start-up, as in the reference (O.reset() empties the list): spheres,
+    facets and boxes with FrictMat and Cundall-Strack contacts, a time step from GlobalStiffnessTimeStepper
+    (O.dynDt is True) and NewtonIntegrator with damping 0.2, labeled as there."""
+    return [
+        ForceResetter(),  # noqa: F405
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Box_Aabb()], label='collider'),  # noqa: F405
+        InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()],  # noqa: F405
+                        [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()], label='interactionLoop'),  # noqa: F405
+        GlobalStiffnessTimeStepper(timeStepUpdateInterval=10, timestepSafetyCoefficient=0.8, label='timeStepper'),  # noqa: F405
+        NewtonIntegrator(damping=0.2, label='newton'),  # noqa: F405
+    ]
+
+
+if O.iter == 0 and len(O.engines) == 0 and len(O.bodies) == 0:  # (the first import in this process)
+    O.engines = _defaultEngines()
+
 # `from yade import *` gives the classes, O and the helper modules a script uses by name (utils, pack,
 # ...), not the submodules whose names would hide Python's own (math) or the reference's layout
 # modules (config, system, wrapper...). Keep this block last.
