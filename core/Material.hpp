@@ -14,7 +14,7 @@ public:
         Serializable::visit(v);
         v.attr("id", id, "Index in O.materials (-1 if not there); set by O.materials.append", Attr::readonly);
         v.attr("label", label, "Textual name; O.materials['label'] finds it");
-        v.attr("density", density, "Density [kg/m³]", Attr::positive);
+        v.attr("density", density, "Density [kg/m³] (0: massless bodies, e.g. fixed walls, as in Yade)", Attr::nonNegative);
     }
     YADE_INDEXABLE_ROOT(Material)
 };

@@ -177,15 +177,39 @@ def test_sphere_radius_must_be_positive_and_finite(bad):
     assert s.radius == 1
 
 
-def test_density_must_be_positive():
+def test_density_must_be_non_negative():
+    """0 is accepted, as in the reference: its scripts give walls (fixed boxes) a material of density 0
+    (triax-tutorial, triax-basic, the thermal and PFV examples)."""
+    assert FrictMat(density=0).density == 0
     with pytest.raises(ValueError, match='density'):
-        FrictMat(density=0)
-    with pytest.raises(ValueError):
         FrictMat(density=-5)
     m = FrictMat()
-    with pytest.raises(ValueError):
-        m.density = 0
+    for bad in (-1, float('nan'), float('inf')):
+        with pytest.raises(ValueError):
+            m.density = bad
     assert m.density == 1000
+
+
+def test_walls_of_density_zero_run_and_a_free_massless_body_is_named():
+    O.reset()
+    walls = O.materials.append(FrictMat(density=0, young=1e7, frictionAngle=0))
+    grains = O.materials.append(FrictMat(density=2600, young=1e7))
+    O.bodies.append(utils.box((0, 0, -0.1), (1, 1, 0.1), fixed=True, material=walls))
+    O.bodies.append(utils.sphere((0, 0, 0.099), 0.1, material=grains))
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(gravity=(0, 0, -10), damping=0.4)]
+    O.dt = 1e-4
+    O.run(8000, True)
+    assert O.bodies[0].state.mass == 0 and O.interactions.countReal() == 1
+    m = O.bodies[1].state.mass
+    assert O.interactions[0, 1].phys.normalForce.norm() == pytest.approx(10 * m, rel=1e-2)  # resting on the wall
+    # a free body of density 0: the step is refused, naming the mass (the reference goes on with NaN)
+    O.bodies.append(utils.sphere((5, 5, 5), 0.1, material=walls))
+    with pytest.raises(StabilityError, match=r'body #2.*its mass is 0 \(a material of density 0\?\)'):
+        O.step()
+    O.reset()
 
 
 def test_other_value_checks():

@@ -480,6 +480,39 @@ def test_utils_box_orientation_and_fixed():
     assert b.state.mass == pytest.approx(48)  # 8·.1·.2·.3·1000: fixed bodies keep their mass
 
 
+def test_utils_box_of_zero_extent_is_a_plate():
+    """A zero half-size is accepted, as in the reference (its 2D examples make plates so:
+    box(extents=(30, 0, 30))); a negative one is refused (the reference gives a negative mass)."""
+    b = box((0, 0, 0), (30, 0, 30), fixed=True)
+    assert b.state.mass == 0 and arr(b.shape.extents) == pytest.approx([30, 0, 30])
+    assert arr(box((0, 0, 0), (0, 0, 0)).shape.extents) == pytest.approx([0, 0, 0])
+    with pytest.raises(ValueError, match='non-negative'):
+        box((0, 0, 0), (1, -1, 1))
+    with pytest.raises(ValueError, match='extents'):
+        Box(extents=(1, -1, 1))
+
+
+# The sphere's center inside the box, exactly on a mid-plane (a tie between two opposite faces): the
+# reference's output for each of these (box half-sizes, center): normal, depth, contact point
+BOX_TIES_REFERENCE = [
+    ((1, 1, 1), (0, 0, 0), (-1, 0, 0), 1.3, (-0.35, 0, 0)),
+    ((1, 0.5, 1), (0, 0, 0), (0, -1, 0), 0.8, (0, -0.1, 0)),
+    ((1, 1, 0.5), (0, 0, 0), (0, 0, -1), 0.8, (0, 0, -0.1)),
+    ((1, 0, 1), (0, 0, 0), (0, -1, 0), 0.3, (0, 0.15, 0)),
+    ((0, 1, 1), (0, 0, 0), (-1, 0, 0), 0.3, (0.15, 0, 0)),
+    ((1, 0, 1), (0.2, 0, 0.3), (0, -1, 0), 0.3, (0.2, 0.15, 0.3)),
+]
+
+
+@pytest.mark.parametrize('ext,center,normal,depth,point', BOX_TIES_REFERENCE)
+def test_box_sphere_tie_on_a_mid_plane_as_in_reference(ext, center, normal, depth, point):
+    one_step([box((0, 0, 0), ext, fixed=True), sphere(center, 0.3)], dt=1e-9)
+    g = O.interactions[0, 1].geom
+    np.testing.assert_allclose(arr(g.normal), normal, atol=1e-15)
+    assert g.penetrationDepth == pytest.approx(depth, rel=1e-12)
+    np.testing.assert_allclose(arr(g.contactPoint), point, atol=1e-12)
+
+
 # aabbWalls([(0,0,0),(1,1,1)], thickness=.1), printed by the reference: (pos, extents), all
 # non-dynamic, mass 225 (default density 1000)
 AABB_WALLS_REFERENCE = [

@@ -88,7 +88,7 @@ def refused(data, match):
     ('State', 'ori', '0 0 0 0', 'State.ori must be a finite non-zero quaternion'),
     ('State', 'mass', '-1', 'State.mass must be non-negative'),
     ('Sphere', 'radius', '-0.5', 'Sphere.radius must be positive'),
-    ('FrictMat', 'density', '0', 'FrictMat.density must be positive'),
+    ('FrictMat', 'density', '-1', 'FrictMat.density must be non-negative'),
 ])
 def test_a_value_the_python_setter_refuses_is_refused_in_a_file(saved, cls, attr, text, match):
     """Bug: the reader stored any number, so a file could load a non-finite position, orientation or

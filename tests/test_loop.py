@@ -446,7 +446,8 @@ def test_timing_counts_each_engine_run_only_when_enabled():
         rows = timing.stats(out)
         assert [r[0] for r in rows] == ['ForceResetter', 'InsertionSortCollider', 'newton']
         assert 'TOTAL' in out.getvalue() and 'newton' in out.getvalue()
+        assert timing.runtime() == sum(e.execTime for e in O.engines) == sum(r[2] for r in rows) > 0
         timing.reset()
-        assert [e.execCount for e in O.engines] == [0, 0, 0]
+        assert [e.execCount for e in O.engines] == [0, 0, 0] and timing.runtime() == 0
     finally:
         O.timingEnabled = False

@@ -10,7 +10,7 @@ public:
     Vector3r extents = Vector3r::Constant(NaN);
     template <class V> void visit(V& v) {
         Shape::visit(v);
-        v.attr("extents", extents, "Half-sizes along the local axes [m]", Attr::positive);
+        v.attr("extents", extents, "Half-sizes along the local axes [m] (0: a plate)", Attr::nonNegative);
     }
     YADE_INDEXABLE(Box)
 };

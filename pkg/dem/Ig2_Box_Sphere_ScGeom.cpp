@@ -22,7 +22,7 @@ bool Ig2_Box_Sphere_ScGeom::go(const Box& b, const Sphere& s, const Kinematics& 
                 ax = i;
             }
         Vector3r n = Vector3r::Zero();
-        n[ax] = local[ax] >= 0 ? 1 : -1;
+        n[ax] = local[ax] > 0 ? 1 : -1; // (exactly on the mid-plane, e.g. in a plate of zero thickness: -1, as in the reference)
         normal = st1.ori * n;
         penetrationDepth = r + gap;
     } else {

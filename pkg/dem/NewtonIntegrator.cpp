@@ -364,7 +364,12 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
     for (const auto& partner : s.interactions.partnersOf(id))
         if (const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(partner.k)))
             maxOverlap = std::max(maxOverlap, g->penetrationDepth / std::max(std::min(g->refR1 > 0 ? g->refR1 : g->refR2, g->refR2), Real(1e-300)));
-    if (std::isfinite(crit.dt) && s.dt > crit.dt)
+    const BodyHot state = s.bodies.hot().get((size_t)id);
+    const int xyz = State::DOF_X | State::DOF_Y | State::DOF_Z;
+    if (!(state.mass > 0) && (state.blockedDOFsMask & xyz) != xyz)
+        os << "its mass is " << state.mass << " (a material of density 0?) while its translations are free: "
+           << "give it a density, or block it (fixed=True, as walls of density 0 are in Yade's scripts)";
+    else if (std::isfinite(crit.dt) && s.dt > crit.dt)
         os << "O.dt=" << s.dt << " exceeds the critical step " << crit.dt << " of body #" << crit.body
            << "'s contacts (stiffness-based, 3.5.18); use a smaller O.dt (e.g. O.dt=" << 0.5 * crit.dt
            << ") or a GlobalStiffnessTimeStepper";

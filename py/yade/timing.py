@@ -19,6 +19,11 @@ def reset():
         e.execCount = 0
 
 
+def runtime():
+    """The engines' total measured time [ns]: the sum of execTime over O.engines (as in the reference)."""
+    return sum(e.execTime for e in O.engines)
+
+
 def stats(out=None):
     """Print a table (engine, runs, total time, time per run, share of the total); returns it as a
     list of (name, execCount, execTime [ns]) tuples."""

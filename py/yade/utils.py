@@ -148,10 +148,11 @@ def wall(position, axis, sense=0, color=None, material=-1, mask=1):
 
 def box(center, extents, orientation=Quaternion.Identity, dynamic=None, fixed=False, wire=False, color=None, highlight=False,
         material=-1, mask=1):
-    """A Box body of half-sizes `extents`; mass and inertia of a solid cuboid from the material density."""
+    """A Box body of half-sizes `extents`; mass and inertia of a solid cuboid from the material density. A zero
+    extent (a plate, as the reference's scripts use for 2D set-ups) is accepted; its mass is then 0 (fixed=True)."""
     extents = _finiteVector('extents', extents)
-    if not all(e > 0 for e in extents):
-        raise ValueError('box extents must be positive, got %s' % extents)
+    if not all(e >= 0 for e in extents):
+        raise ValueError('box extents must be non-negative, got %s' % extents)
     if dynamic is not None:
         fixed = not dynamic
     shape = Box(extents=extents, color=color if color is not None else randomColor(), wire=wire, highlight=highlight)
