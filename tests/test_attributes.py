@@ -568,6 +568,24 @@ def test_disp_functor_follows_a_change_of_functors():
     assert bd.dispFunctor(Sphere()) is f
 
 
+def test_disp_matrix_as_in_reference():
+    """The dictionaries the reference prints for the same dispatchers (its test-sphere-facet.py example
+    prints them); names=False gives this engine's class indices, which are not the reference's."""
+    from yade import (IGeomDispatcher, IPhysDispatcher, LawDispatcher, Ig2_Sphere_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom,
+                      Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack)
+    gd = IGeomDispatcher([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()])
+    assert gd.dispMatrix() == {('Sphere', 'Sphere'): 'Ig2_Sphere_Sphere_ScGeom', ('Sphere', 'Facet'): 'Ig2_Facet_Sphere_ScGeom',
+                               ('Facet', 'Sphere'): 'Ig2_Facet_Sphere_ScGeom'}
+    assert IPhysDispatcher([Ip2_FrictMat_FrictMat_FrictPhys()]).dispMatrix() == {('FrictMat', 'FrictMat'): 'Ip2_FrictMat_FrictMat_FrictPhys'}
+    assert LawDispatcher([Law2_ScGeom_FrictPhys_CundallStrack()]).dispMatrix() == \
+        {('ScGeom', 'FrictPhys'): 'Law2_ScGeom_FrictPhys_CundallStrack'}
+    assert BoundDispatcher([Bo1_Sphere_Aabb()]).dispMatrix() == {('Sphere',): 'Bo1_Sphere_Aabb'}
+    indices = gd.dispMatrix(False)
+    s, f = Sphere().dispIndex, Facet().dispIndex
+    assert indices == {(s, s): 'Ig2_Sphere_Sphere_ScGeom', (s, f): 'Ig2_Facet_Sphere_ScGeom', (f, s): 'Ig2_Facet_Sphere_ScGeom'}
+    assert IGeomDispatcher().dispMatrix() == {}
+
+
 # ------------------------------------------------------------------ identity through containers
 
 def test_body_in_container_is_the_appended_object():

@@ -667,6 +667,27 @@ def test_overlapping_masks_do_interact():
     assert O.interactions.countReal() == 1
 
 
+# (m1, m2, avoidSelfInteractionMask): real contacts after one step, printed by the reference for the same set-up
+AVOID_SELF_REFERENCE = [((3, 3, 2), 0), ((3, 3, 4), 1), ((3, 1, 1), 1), ((2, 2, 2), 0), ((1, 1, 0), 1), ((5, 5, 4), 0),
+                        ((5, 7, 4), 1), ((6, 6, 1), 1), ((1, 3, 1), 1), ((3, 3, 3), 0)]
+
+
+@pytest.mark.parametrize('masks,contacts', AVOID_SELF_REFERENCE)
+def test_avoid_self_interaction_mask_as_in_reference(masks, contacts):
+    """Two overlapping spheres of one and the same mask with a bit of avoidSelfInteractionMask never interact;
+    different masks do as usual (the reference's triple-pendulum example uses it)."""
+    m1, m2, avoid = masks
+    m = mat()
+    r = 0.1
+    O.bodies.append([sphere((0, 0, 0), r, material=m, mask=m1), sphere((1.9 * r, 0, 0), r, material=m, mask=m2)])
+    O.engines = dem_engines()
+    O.engines[1].avoidSelfInteractionMask = avoid
+    O.dt = 0.05 * PWaveTimeStep()
+    O.step()
+    assert O.interactions.countReal() == contacts
+    assert len(O.interactions.all()) == contacts  # (not even a potential pair)
+
+
 # ====================================================================== 10. functor type chain
 
 def test_law2_missing_for_ig2_product_raises_value_error_naming_scgeom():

@@ -85,7 +85,7 @@ bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
 
 bool InsertionSortCollider::overlapNow(Body::id_t a, Body::id_t b) const {
     const Box &A = boxes[a], &B = boxes[b];
-    const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic); // as Body::mayCollide
+    const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic) && !avoidsItself(A.mask, B.mask); // as mayCollide()
     return mayCollide && boxesOverlap(A, B);
 }
 
@@ -144,7 +144,7 @@ void InsertionSortCollider::rebuild() {
         if (intrs.isReal(k)) continue;
         const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
         const auto &A = bodies.exists(a) ? bodies[a] : nullptr, &B = bodies.exists(b) ? bodies[b] : nullptr;
-        if (!collidable(A) || !collidable(B) || !Body::mayCollide(*A, *B) || !boundsOverlap(*A, *B)) stale.emplace_back(a, b);
+        if (!collidable(A) || !collidable(B) || !mayCollide(*A, *B) || !boundsOverlap(*A, *B)) stale.emplace_back(a, b);
     }
     for (const auto& p : stale) intrs.erase(p.first, p.second);
     // Sweep along x: every body whose lower bound lies inside [min, max] of another may overlap it.
@@ -157,7 +157,7 @@ void InsertionSortCollider::rebuild() {
         for (size_t j = i + 1; j < xs.size() && !(xs[j].id == a && !xs[j].isMin); ++j) {
             if (!xs[j].isMin) continue;
             const Body::id_t b = xs[j].id;
-            if (Body::mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && intrs.findIndex(a, b) < 0)
+            if (mayCollide(*bodies[a], *bodies[b]) && boundsOverlap(*bodies[a], *bodies[b]) && intrs.findIndex(a, b) < 0)
                 added.emplace_back(std::min(a, b), std::max(a, b));
         }
     }

@@ -128,6 +128,32 @@ template <class D, class A, class B> static void bindDispFunctor2D(const char* d
     }, doc);
 }
 
+// D.dispMatrix(names=True): what the functors declare, {(class, ...): functor class name}, with both orders
+// of a pair where the dispatcher swaps arguments (Ig2, Ip2); the first functor of a pair wins, as in
+// dispatch. names=False: the classes' indices in their family here (the reference's numbers differ).
+template <class D> static void bindDispMatrix(std::vector<const char*> families, bool symmetric) {
+    existing<D, Dispatcher>().def("dispMatrix", [families, symmetric](D& d, bool names) {
+        py::dict r;
+        auto add = [&](const std::vector<std::string>& types, const std::string& functor) {
+            py::list k;
+            for (size_t i = 0; i < types.size(); ++i) {
+                if (names) k.append(types[i]);
+                else k.append(familyIndexOf(families[i], types[i]));
+            }
+            const py::tuple key(k);
+            if (!r.contains(key)) r[key] = functor;
+        };
+        for (const auto& f : d.functorsBase()) {
+            if (!f) continue;
+            const std::vector<std::string> t = f->argTypes();
+            if (t.size() != families.size()) continue;
+            add(t, f->getClassName());
+            if (symmetric && t.size() == 2 && t[0] != t[1]) add({t[1], t[0]}, f->getClassName());
+        }
+        return r;
+    }, py::arg("names") = true, "The dispatch matrix: {(class names): functor class name} of the pairs the functors declare (names=False: class indices)");
+}
+
 // Members that are computed, not stored: derived properties and methods.
 // An Interaction that O.interactions erased (the collider dropped the pair, a body was erased, the
 // interactions were cleared) while Python held it: its attributes raise ReferenceError instead of
@@ -269,6 +295,10 @@ static void bindExtras(py::module_& m) {
     bindDispFunctor2D<IGeomDispatcher, Shape, Shape>("The functor that would handle this pair of shapes (None if none)");
     bindDispFunctor2D<IPhysDispatcher, Material, Material>("The functor that would handle this pair of materials (None if none)");
     bindDispFunctor2D<LawDispatcher, IGeom, IPhys>("The functor that would handle this (IGeom, IPhys) pair (None if none)");
+    bindDispMatrix<BoundDispatcher>({"Shape"}, false);
+    bindDispMatrix<IGeomDispatcher>({"Shape", "Shape"}, true);
+    bindDispMatrix<IPhysDispatcher>({"Material", "Material"}, true);
+    bindDispMatrix<LawDispatcher>({"IGeom", "IPhys"}, false);
 }
 
 // How help() shows the default of an attribute: repr of the value in a new object; objects by
