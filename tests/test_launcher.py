@@ -214,15 +214,18 @@ def test_script_namespace_has_the_reference_launchers_names(tmp_path):
         print("modules", sys.version_info.major, os.sep, time.time() > 0, math.pi == pi, yade.O is O)
         print("numpy", int(numpy.arange(5).sum()), "numpy" in _s.modules)
         print("opts", opts.nogui, opts.threads, opts.exitAfter)
+        import yade.runtime
+        print("runtime", yade.runtime.opts is opts, yade.runtime.opts.stdperformance, yade.runtime.argv[1:], yade.runtime.hasDisplay)
         O.engines = [ForceResetter(), NewtonIntegrator(damping=0.3)]
         print("typedEngine", typedEngine("NewtonIntegrator").damping, Omega().engines[1].damping)
         open(__file__ + ".inc", "w").write("included = 6 * 7\\n")
         execfile(__file__ + ".inc")
         print("execfile", included)
     """)
-    r = run("-n", "-x", "-j", "2", script)
+    r = run("-n", "-x", "-j", "2", script, "arg1")
     assert r.returncode == 0, r.stderr
     out = {l.split(" ", 1)[0]: l.split(" ", 1)[1] for l in r.stdout.splitlines() if " " in l}
+    assert out["runtime"] == "True None ['arg1'] False"
     assert out["lazy"] == "True"
     assert out["math"] == "True True True 2"
     assert out["modules"] == "3 / True True True"
