@@ -327,3 +327,19 @@ def test_modules_and_aliases_the_reference_start_up_leaves_in_the_namespace(tmp_
     assert "'Function utils.facetBox is deprecated, use geom.facetBox instead.', 'Function utils.facetCylinder is deprecated, use " \
         "geom.facetCylinder instead.'" in out["facetBox"]
     assert out["complex"].split()[0] == "15.0" and out["complex"].split()[1] == "True"
+
+
+def test_qt_import_says_there_is_no_gui(tmp_path):
+    """`from yade import qt` (45 of the reference's examples) raises ImportError naming the missing GUI, as the
+    reference's does headless, instead of Python's bare 'cannot import name'."""
+    script = write(tmp_path, "q.py", """\
+        try:
+            from yade import qt
+        except ImportError as e:
+            print("err", "no Qt GUI" in str(e), "opts.nogui" in str(e))
+        O.bodies.append(sphere((0, 0, 0), 1))
+        print("after", len(O.bodies))
+    """)
+    r = run("-n", "-x", script)
+    assert r.returncode == 0, r.stderr
+    assert "err True True" in r.stdout and "after 1" in r.stdout
