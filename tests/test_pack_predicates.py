@@ -110,6 +110,25 @@ def test_regular_packings_as_the_reference():
     assert len(O.bodies) == len(bodies)
 
 
+def test_regular_packings_with_a_negative_gap_overlap_as_in_the_reference():
+    """A negative gap (down to above -2*radius) packs overlapping spheres, as the reference allows (its
+    ThermalEngine example uses gap=-1e-8); the counts and first two centres are the reference's."""
+    box = pack.inAlignedBox((0, 0, 0), (10, 10, 10))
+    for gen, gap, count, c0, c1 in [(pack.regularOrtho, -1e-8, 125, (1, 1, 1), (1, 1, 2.99999999)),
+                                    (pack.regularOrtho, -0.5, 216, (1, 1, 1), (1, 1, 2.5)),
+                                    (pack.regularHexa, -1e-8, 88, (1.99999999, 2.3094010652114974, 1.6329931536904863),
+                                     (2.999999985, 1.7320507989086231, 3.2659863073809725)),
+                                    (pack.regularHexa, -0.5, 231, (1.5, 1.7320508075688772, 1.224744871391589),
+                                     (2.25, 1.299038105676658, 2.449489742783178))]:
+        bodies = gen(box, radius=1, gap=gap)
+        assert len(bodies) == count
+        assert near(bodies[0].state.pos, c0) and near(bodies[1].state.pos, c1)
+    for gen in (pack.regularOrtho, pack.regularHexa):  # (the reference: ZeroDivisionError, IndexError)
+        for gap in (-2.0, -2.5, float('nan')):
+            with pytest.raises(ValueError, match='gap'):
+                gen(box, radius=1, gap=gap)
+
+
 def test_filter_sphere_pack_centres_the_packing_on_the_predicate():
     sp = pack.SpherePack()
     sp.makeCloud((0, 0, 0), (3, 3, 3), rMean=.2, rRelFuzz=.3, seed=5)

@@ -57,8 +57,8 @@ def _latticeBox(predicate, radius, gap, who):
     radius, gap = float(radius), float(gap)
     if not (radius > 0 and math.isfinite(radius)):
         raise ValueError('%s: radius must be positive and finite, got %r' % (who, radius))
-    if not (gap >= 0 and math.isfinite(gap)):
-        raise ValueError('%s: gap must be zero or positive and finite, got %r' % (who, gap))
+    if not (gap > -2 * radius and math.isfinite(gap)):  # (negative: overlapping neighbours, as the reference allows)
+        raise ValueError('%s: gap must be finite and above -2*radius (the spacing 2*radius+gap must be positive), got %r' % (who, gap))
     lo, hi = (Vector3(v) for v in predicate.aabb())
     if not all(math.isfinite(x) for x in list(lo) + list(hi)):
         raise ValueError('%s: the predicate has an unbounded box (%s, %s); intersect it with a bounded one (pred & pack.inAlignedBox(...))'
