@@ -19,16 +19,13 @@ public:
         v.attr("timestepSafetyCoefficient", timestepSafetyCoefficient, "O.dt = this × the critical step", Attr::positive);
         v.attr("defaultDt", defaultDt, "Step used while no contact ever gave one; negative: set at the first update to PWaveTimeStep() times the safety coefficient");
         v.attr("maxDt", maxDt, "Upper limit of a step found from the contacts", Attr::positive);
-        v.attr("previousDt", previousDt, "The last step found from the contacts (a new one is at most 1.05 times it)", Attr::readonly);
+        v.attr("previousDt", previousDt, "The last step found from the contacts (a new one is at most 1.05 times it; inf: none yet)", Attr::readonly);
         v.attr("parallelMode", parallelMode, "Accepted for scripts written for Yade; the critical step is found in one pass here either way");
         v.attr("densityScaling", densityScaling, "Scale the densities to reach targetDt: not supported here (True is refused at the first update)");
         v.attr("targetDt", targetDt, "The step densityScaling would aim at", Attr::positive);
         v.attr("viscEl", viscEl, "Accepted for scripts written for Yade: there is no ViscElPhys here, so no contact it would count");
     }
     void action() override;
-
-private:
-    bool computedOnce = false; // a step was found from the contacts: without contacts, O.dt is then left as it is
 };
 
 } // namespace yade
