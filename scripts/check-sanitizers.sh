@@ -143,8 +143,8 @@ asan_stage() {
 
 # ------------------------------------------------------------------ TSan
 # The tests that run several threads: OpenMP teams (O.numThreads / setNumThreads / -j 2) or the
-# background loop thread of a non-blocking O.run(). Tests that start /usr/bin/python3 cannot run
-# here (see CMakeLists.txt: python3-tsan); they are deselected below, with the files they are in.
+# background loop thread of a non-blocking O.run(). A test that starts an interpreter starts
+# sys.executable (here python3-tsan, CMakeLists.txt): /usr/bin/python3 cannot load this build.
 TSAN_TESTS=(
     tests/test_threads.py
     tests/test_containers.py
@@ -181,35 +181,11 @@ tsan_stage() {
     local files=() f
     for f in "${TSAN_TESTS[@]}"; do [[ -f "$f" ]] && files+=("$f"); done
     for f in tests/test_faults.py tests/test_determinism.py; do [[ -f "$f" ]] && files+=("$f"); done
-    # Deselected: these run the launcher as /usr/bin/python3 (by name, not sys.executable), which cannot
-    # import the thread-sanitized extension (undefined symbol __tsan_*); the asan stage runs them.
-    local deselect=(
-        --deselect tests/test_omega.py::test_exitNoBacktrace
-        --deselect tests/test_omega.py::test_exitNoBacktrace_while_running
-        --deselect tests/test_pyrunner.py::test_iterPeriod_runs_every_n_steps
-        --deselect tests/test_pyrunner.py::test_nDo_limits_the_number_of_runs
-        --deselect tests/test_pyrunner.py::test_initRun_runs_at_the_first_step
-        --deselect tests/test_pyrunner.py::test_virtPeriod_counts_simulated_time
-        --deselect tests/test_pyrunner.py::test_counters_of_all_engines_as_in_reference
-        --deselect tests/test_pyrunner.py::test_firstIterRun
-        --deselect tests/test_pyrunner.py::test_dead_pyrunner_never_runs
-        --deselect tests/test_pyrunner.py::test_realPeriod_runs_on_wall_clock_time
-        --deselect tests/test_pyrunner.py::test_global_function_of_the_script_is_found
-        --deselect tests/test_pyrunner.py::test_changing_command_and_engines_from_inside_a_command
-        --deselect tests/test_pyrunner.py::test_engines_added_from_a_command_take_effect_at_next_step
-        --deselect tests/test_pyrunner.py::test_engines_assigned_twice_in_one_command_keeps_both
-        --deselect tests/test_pyrunner.py::test_exception_in_command_is_reraised_with_its_type
-        --deselect tests/test_pyrunner.py::test_exception_traceback_names_the_script_function
-        --deselect tests/test_pyrunner.py::test_exception_stops_at_the_iteration_where_it_happened
-        --deselect tests/test_pyrunner.py::test_scene_keeps_working_after_an_exception
-        --deselect tests/test_pyrunner.py::test_uncaught_exception_ends_the_script_with_traceback
-        --deselect tests/test_pyrunner.py::test_dead_can_be_switched_off_later
-    )
     t0=$(now)
     rc=0
     env YADE_BUILD_DIR="$TSAN_BUILD" PYTHONPATH="$TSAN_BUILD" \
         "$TSAN_BUILD/python3-tsan" -m pytest -q -p no:cacheprovider --durations=20 --junitxml="$TSAN_BUILD/pytest.xml" \
-        "${deselect[@]}" ${PYTEST_ARGS:-} "${files[@]}" || rc=$?
+        ${PYTEST_ARGS:-} "${files[@]}" || rc=$?
     t1=$(now)
     record tsan pytest "$TSAN_BUILD/pytest.xml" "$rc" "$rdir" $((t1 - t0))
 

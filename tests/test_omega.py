@@ -9,6 +9,7 @@ import math
 import os
 import pathlib
 import subprocess
+import sys
 import textwrap
 import time
 
@@ -275,7 +276,7 @@ def run_script(tmp_path, body, timeout=60):
     script.write_text(textwrap.dedent(body))
     env = dict(os.environ, YADE_BUILD_DIR=str(BUILD))
     t = time.time()
-    r = subprocess.run(["/usr/bin/python3", str(LAUNCHER), "-n", "-x", str(script)], capture_output=True, text=True,
+    r = subprocess.run([sys.executable, str(LAUNCHER), "-n", "-x", str(script)], capture_output=True, text=True,
                        timeout=timeout, env=env, cwd=str(tmp_path))
     return r, time.time() - t
 

@@ -33,7 +33,7 @@ def run_script(tmp_path, body, timeout=120):
     env = dict(os.environ)
     if 'YADE_BUILD_DIR' not in env:
         env['YADE_BUILD_DIR'] = os.environ.get('YADE_BUILD_DIR', str(REPO / 'build'))
-    r = subprocess.run(['/usr/bin/python3', str(LAUNCHER), '-n', '-x', str(p)], capture_output=True, text=True,
+    r = subprocess.run([sys.executable, str(LAUNCHER), '-n', '-x', str(p)], capture_output=True, text=True,
                        timeout=timeout, env=env, cwd=str(tmp_path))
     results = [json.loads(l[7:]) for l in r.stdout.splitlines() if l.startswith('RESULT ')]
     return r, results
