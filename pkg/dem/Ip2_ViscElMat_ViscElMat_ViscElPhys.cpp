@@ -25,6 +25,15 @@ Real linearRestitution(Real x) {
     const Real t = std::log((1 + 2 * x * s2) / (1 + 2 * x * s1)) / (2 * w);
     return -(s1 * std::exp(s1 * t) - s2 * std::exp(s2 * t)) / (2 * w);
 }
+// A material's contact time and restitution coefficients, where given: tc > 0, en and et in (0, 1].
+void checkPournin(const ViscElMat& m) {
+    const auto bad = [&](const char* what, Real x) {
+        throw std::invalid_argument("ViscElMat (material " + std::to_string(m.id) + "): " + what + ", got " + std::to_string(x));
+    };
+    if (given(m.tc) && !(m.tc > 0)) bad("the contact time tc must be positive", m.tc);
+    if (given(m.en) && !(m.en > 0 && m.en <= 1)) bad("the restitution coefficient en must be in (0, 1]", m.en);
+    if (given(m.et) && !(m.et > 0 && m.et <= 1)) bad("the restitution coefficient et must be in (0, 1]", m.et);
+}
 } // namespace
 
 Real Ip2_ViscElMat_ViscElMat_ViscElPhys::linearDampingForRestitution(Real e, Real k, Real m) {
@@ -46,6 +55,8 @@ void Ip2_ViscElMat_ViscElMat_ViscElPhys::go(const std::shared_ptr<Material>& m1,
     if (a.lubrication || b.lubrication)
         throw std::invalid_argument("ViscElMat.lubrication is not available in this build (materials " + std::to_string(a.id) + ", " +
                 std::to_string(b.id) + "); set it to False");
+    checkPournin(a);
+    checkPournin(b);
     const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
     if (!geom) throw std::runtime_error("Ip2_ViscElMat_ViscElMat_ViscElPhys needs an ScGeom geometry, got " + I.geom->getClassName());
 
