@@ -27,6 +27,10 @@ _deprecated = {
     'InteractionPhysicsDispatcher': 'IPhysDispatcher',
     'MomentEngine': 'TorqueEngine',
     'SpiralEngine': 'HelixEngine',
+    'SimpleViscoelasticMat': 'ViscElMat',
+    'SimpleViscoelasticPhys': 'ViscElPhys',
+    'Ip2_SimleViscoelasticMat_SimpleViscoelasticMat_SimpleViscoelasticPhys': 'Ip2_ViscElMat_ViscElMat_ViscElPhys',
+    'Law2_Spheres_Viscoelastic_SimpleViscoelastic': 'Law2_ScGeom_ViscElPhys_Basic',
 }
 
 _proxiedClasses = set()
