@@ -232,3 +232,14 @@ def test_ymport_openfoam_poly_mesh(tmp_path):
     corners = [fs[0].state.pos + fs[0].state.ori * v for v in fs[0].shape.vertices]
     for v, ref in zip(corners, [(0, 0, 0), (0, 1, 0), (0.5, 0.5, 0)]):
         assert (v - Vector3(ref)).norm() < 1e-15
+
+
+def test_ymport_stl_reads_single_precision_as_the_reference(tmp_path):
+    """The reference reads an ASCII STL's coordinates in single precision, as a binary STL holds them; the facet's
+    position (the inscribed circle's center) then has its bits too (a triangle of its baraban.stl example)."""
+    (tmp_path / 'd.stl').write_text('solid t\nfacet normal 0 0 1\n outer loop\n  vertex -4.534013748168945 -2.114242792129517 -4.386539459228516\n'
+                                    '  vertex -4.832266330718994 -1.2947998046875 -4.386539459228516\n'
+                                    '  vertex -4.80000114440918 -1.300000667572021 4.613460063934326\n endloop\nendfacet\nendsolid t\n')
+    f = ymport.stl(str(tmp_path / 'd.stl'))[0]
+    assert list(f.state.pos + f.shape.vertices[0]) == [-4.5340137481689453, -2.1142427921295166, -4.3865394592285156]
+    assert list(f.state.pos) == [-4.6888485157800499, -1.6849897814324837, -3.9715659316910608]

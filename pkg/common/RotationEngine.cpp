@@ -13,8 +13,9 @@ void RotationEngine::apply(const std::vector<int>& bodyIds) {
     if (angularVelocity != 0 && !(rotationAxis.squaredNorm() > 0))
         throw std::invalid_argument(getClassName() + ".rotationAxis is zero: give the direction of the rotation axis");
     const Vector3r omega = angularVelocity * rotationAxis;
-    // the turn of one step: positions then lie on the circle after every step, whatever dt
-    const Matrix3r turn = AngleAxisr(angularVelocity * s.dt, rotationAxis).toRotationMatrix();
+    // the turn of one step: positions then lie on the circle after every step, whatever dt (applied as a
+    // quaternion, not as a matrix: the velocity (turn·r - r)/dt then has the reference's bits)
+    const Quaternionr turn(AngleAxisr(angularVelocity * s.dt, rotationAxis));
     for (int id : bodyIds) {
         State& st = *s.bodies[id]->state;
         st.angVel() += omega;

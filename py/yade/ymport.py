@@ -105,7 +105,8 @@ def textFacets(filename, format='x1_y1_z1_x2_y2_z2_x3_y3_z3', shift=Vector3.Zero
 
 
 def _stlTriangles(filename):
-    """The triangles (3 tuples of 3 floats) of an ASCII or binary STL file."""
+    """The triangles (3 tuples of 3 floats) of an ASCII or binary STL file. The coordinates are single precision, as
+    STL's are (and as the reference reads ASCII files too: 4.097997188568115 becomes 4.0979971885681152)."""
     with open(filename, 'rb') as f:
         data = f.read()
     if len(data) >= 84:
@@ -124,7 +125,7 @@ def _stlTriangles(filename):
     for i, w in enumerate(words):
         if w.lower() == 'vertex':
             try:
-                verts.append(tuple(float(x) for x in words[i + 1:i + 4]))
+                verts.append(struct.unpack('<3f', struct.pack('<3f', *(float(x) for x in words[i + 1:i + 4]))))
             except ValueError as e:
                 raise ImportFormatError('%s: bad vertex: %s' % (filename, e))
     if len(verts) % 3:
