@@ -48,6 +48,11 @@ static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0,
         const Vector3r& angVel = h.angVel[id];
         const Real angle = angVel.norm() * dt;
         if (angle == 0) continue;
+        if (spins[id] == 2) { // a body turned by an engine (facets of a drum): the turn as the reference computes it
+            const Real w = angVel.norm();
+            h.ori[id] = (Quaternionr(AngleAxisr(angle, angVel / w)) * h.ori[id]).normalized();
+            continue;
+        }
         Real sincHalf, cosHalf;
         sincCosHalf(angle, sincHalf, cosHalf);
         const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
@@ -302,8 +307,8 @@ void NewtonIntegrator::action() {
             maxV2 = std::max(maxV2, vel.squaredNorm());
             if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
                 h.ori[id] = newOri.normalized();
-            else
-                spins[id] = true; // (turned below)
+            else // (turned below; a body whose rotations are all blocked turns only as an engine prescribes)
+                spins[id] = (blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ)) == (State::DOF_RX | State::DOF_RY | State::DOF_RZ) ? 2 : 1;
         }
         turnSpheres(h, spins, b0, b1, dt);
         if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
