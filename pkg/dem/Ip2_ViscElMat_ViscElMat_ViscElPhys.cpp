@@ -40,12 +40,12 @@ Real Ip2_ViscElMat_ViscElMat_ViscElPhys::linearDampingForRestitution(Real e, Rea
     if (!(e > 0 && e <= 1)) throw std::invalid_argument("ViscElMat: the restitution coefficient en must be in (0, 1], got " + std::to_string(e));
     if (e == 1) return 0;
     Real lo = 0, hi = 1; // the ratio to the critical damping: e falls from 1 towards 0 as it grows
-    while (linearRestitution(hi) > e) hi *= 2;
+    while (hi < 1e6 && linearRestitution(hi) > e) hi *= 2;
     for (int i = 0; i < 200 && hi - lo > 1e-16 * hi; ++i) {
         const Real mid = 0.5 * (lo + hi);
         (linearRestitution(mid) > e ? lo : hi) = mid;
     }
-    return 2 * 0.5 * (lo + hi) * std::sqrt(k * m);
+    return (lo + hi) * std::sqrt(k * m); // c = 2·x·sqrt(k·m), x the midpoint
 }
 
 void Ip2_ViscElMat_ViscElMat_ViscElPhys::go(const std::shared_ptr<Material>& m1, const std::shared_ptr<Material>& m2, Interaction& I) {
