@@ -232,9 +232,10 @@ def test_young_and_en_give_the_asked_restitution():
     (dict(tc=1e-4, en=0.5, et=0.5, lubrication=True), dict(tc=1e-4, en=0.5, et=0.5), "lubrication is not available"),
     (dict(tc=1e-4, en=1.5, et=0.5), dict(tc=1e-4, en=0.5, et=0.5), "en must be in"),
     (dict(tc=-1e-4, en=0.5, et=0.5), dict(tc=1e-4, en=0.5, et=0.5), "tc must be positive"),
+    (dict(tc=1e-4, en=0.5, et=0.5, mR=0.1, mRtype=3), dict(tc=1e-4, en=0.5, et=0.5, mR=0.1), "mRtype must be 1 or 2"),
 ])
 def test_bad_materials_are_refused_and_the_scene_is_left_as_it_was(m1, m2, message):
-    """The reference aborts the process (terminate called after a std::runtime_error) on the first three."""
+    """The reference aborts the process (terminate called after a std::runtime_error) on the first three and on mRtype 3."""
     with pytest.raises(RuntimeError, match=message):
         pair(m1, m2)
     assert O.iter == 0 and tuple(O.bodies[1].state.pos) == (0, 0, 0.03 - 1e-5)

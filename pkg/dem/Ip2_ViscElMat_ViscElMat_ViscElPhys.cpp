@@ -111,6 +111,9 @@ void Ip2_ViscElMat_ViscElMat_ViscElPhys::go(const std::shared_ptr<Material>& m1,
     phys->tangensOfFrictionAngle = std::tan(angle);
     phys->mR = a.mR + b.mR > 0 ? 2 * a.mR * b.mR / (a.mR + b.mR) : 0;
     phys->mRtype = a.mRtype;
+    if (phys->mR > 0 && phys->mRtype != 1 && phys->mRtype != 2) // (the reference aborts the process)
+        throw std::invalid_argument("ViscElMat (material " + std::to_string(a.id) + "): mRtype must be 1 or 2, got " +
+                std::to_string(a.mRtype));
     I.phys = phys;
 }
 
