@@ -37,7 +37,10 @@ static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
     }
 }
 
-// The spherical rotation update (3.5.9) of bodies b0 .. b1-1 whose spins[id] is set: each turned by
+static constexpr int allRotations = State::DOF_RX | State::DOF_RY | State::DOF_RZ;
+
+// The spherical rotation update (3.5.9) of bodies b0 .. b1-1 whose spins[id] is set (1: the fast update;
+// 2: a body whose rotations are all blocked, turned by the reference's formula): each turned by
 // angVel·dt about angVel. In a loop of its own, after the one that updates the velocities: each turn
 // waits for its spin, and in one loop with the rest a body's whole update was one chain of
 // dependent operations the processor could not overlap with the next body's (this loop is short:
@@ -46,10 +49,9 @@ static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0,
     for (long id = b0; id < b1; ++id) {
         if (!spins[id]) continue;
         const Vector3r& angVel = h.angVel[id];
-        const Real angle = angVel.norm() * dt;
+        const Real w = angVel.norm(), angle = w * dt;
         if (angle == 0) continue;
         if (spins[id] == 2) { // a body turned by an engine (facets of a drum): the turn as the reference computes it
-            const Real w = angVel.norm();
             h.ori[id] = (Quaternionr(AngleAxisr(angle, angVel / w)) * h.ori[id]).normalized();
             continue;
         }
@@ -307,8 +309,8 @@ void NewtonIntegrator::action() {
             maxV2 = std::max(maxV2, vel.squaredNorm());
             if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
                 h.ori[id] = newOri.normalized();
-            else // (turned below; a body whose rotations are all blocked turns only as an engine prescribes)
-                spins[id] = (blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ)) == (State::DOF_RX | State::DOF_RY | State::DOF_RZ) ? 2 : 1;
+            else // (turned below: 1, or 2 for a body whose rotations are all blocked: it turns only as an engine prescribes)
+                spins[id] = (blocked & allRotations) == allRotations ? 2 : 1;
         }
         turnSpheres(h, spins, b0, b1, dt);
         if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
