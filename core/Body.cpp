@@ -11,7 +11,7 @@ void Body::postLoad() {
         state->bind(store, id, mask);
         boundState = state;
     }
-    store->mask[(size_t)id] = mask;
+    store->rows[(size_t)id].mask = mask;
 }
 
 } // namespace yade
