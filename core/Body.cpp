@@ -11,7 +11,7 @@ void Body::postLoad() {
         state->bind(store, id, mask);
         boundState = state;
     }
-    store->rows[(size_t)id].mask = mask;
+    store->mask[(size_t)id] = mask;
 }
 
 } // namespace yade

@@ -5,57 +5,66 @@
 namespace yade {
 
 void BodyStore::resize(size_t n) {
-    const size_t most = std::min({rows.maxSize(), ori.maxSize(), radius.maxSize()});
+    size_t most = pos.maxSize();
+    for (size_t m : {vel.maxSize(), angVel.maxSize(), inertia.maxSize(), ori.maxSize(), mass.maxSize(), blockedDOFsMask.maxSize(),
+                 mask.maxSize(), isDamped.maxSize(), exists.maxSize(), radius.maxSize()})
+        most = std::min(most, m);
     if (n > most) throw std::length_error("more than " + std::to_string(most) + " bodies (the address space reserved for them)");
-    rows.resize(n); // (holes: exists is false)
-    ori.resize(n, Quaternionr::Identity());
+    const BodyHot hole;
+    pos.resize(n, hole.pos);
+    vel.resize(n, hole.vel);
+    angVel.resize(n, hole.angVel);
+    inertia.resize(n, hole.inertia);
+    ori.resize(n, hole.ori);
+    mass.resize(n, hole.mass);
+    blockedDOFsMask.resize(n, hole.blockedDOFsMask);
+    mask.resize(n, hole.mask);
+    isDamped.resize(n, hole.isDamped);
+    exists.resize(n, false);
 }
 
 BodyHot BodyStore::get(size_t id) const {
-    const BodyRow& w = rows[id];
     BodyHot r;
-    r.pos = w.pos;
-    r.vel = w.vel;
-    r.angVel = w.angVel;
+    r.pos = pos[id];
+    r.vel = vel[id];
+    r.angVel = angVel[id];
     r.ori = ori[id];
-    r.inertia = w.inertia;
-    r.mass = w.mass;
-    r.blockedDOFsMask = w.blockedDOFsMask;
-    r.mask = w.mask;
-    r.isDamped = w.isDamped;
-    r.exists = w.exists;
+    r.inertia = inertia[id];
+    r.mass = mass[id];
+    r.blockedDOFsMask = blockedDOFsMask[id];
+    r.mask = mask[id];
+    r.isDamped = isDamped[id];
+    r.exists = exists[id];
     return r;
 }
 
 void BodyStore::set(size_t id, const BodyHot& r) {
-    BodyRow& w = rows[id];
-    w.pos = r.pos;
-    w.vel = r.vel;
-    w.angVel = r.angVel;
+    pos[id] = r.pos;
+    vel[id] = r.vel;
+    angVel[id] = r.angVel;
     ori[id] = r.ori;
-    w.inertia = r.inertia;
-    w.mass = r.mass;
-    w.blockedDOFsMask = r.blockedDOFsMask;
-    w.mask = r.mask;
-    w.isDamped = r.isDamped;
-    w.exists = r.exists;
+    inertia[id] = r.inertia;
+    mass[id] = r.mass;
+    blockedDOFsMask[id] = r.blockedDOFsMask;
+    mask[id] = r.mask;
+    isDamped[id] = r.isDamped;
+    exists[id] = r.exists;
 }
 
 void* BodyStore::fieldAddress(std::ptrdiff_t offset, size_t id) {
     static const BodyHot proto;
     const char* base = reinterpret_cast<const char*>(&proto);
     auto at = [&](const void* member) { return reinterpret_cast<const char*>(member) - base; };
-    BodyRow& w = rows[id];
-    if (offset == at(&proto.pos)) return &w.pos;
-    if (offset == at(&proto.vel)) return &w.vel;
-    if (offset == at(&proto.angVel)) return &w.angVel;
+    if (offset == at(&proto.pos)) return &pos[id];
+    if (offset == at(&proto.vel)) return &vel[id];
+    if (offset == at(&proto.angVel)) return &angVel[id];
     if (offset == at(&proto.ori)) return &ori[id];
-    if (offset == at(&proto.inertia)) return &w.inertia;
-    if (offset == at(&proto.mass)) return &w.mass;
-    if (offset == at(&proto.blockedDOFsMask)) return &w.blockedDOFsMask;
-    if (offset == at(&proto.mask)) return &w.mask;
-    if (offset == at(&proto.isDamped)) return &w.isDamped;
-    if (offset == at(&proto.exists)) return &w.exists;
+    if (offset == at(&proto.inertia)) return &inertia[id];
+    if (offset == at(&proto.mass)) return &mass[id];
+    if (offset == at(&proto.blockedDOFsMask)) return &blockedDOFsMask[id];
+    if (offset == at(&proto.mask)) return &mask[id];
+    if (offset == at(&proto.isDamped)) return &isDamped[id];
+    if (offset == at(&proto.exists)) return &exists[id];
     throw std::logic_error("BodyStore::fieldAddress: no column at offset " + std::to_string(offset));
 }
 

@@ -44,7 +44,7 @@ void State::unbind() {
     if (slot < 0) return;
     local = std::make_unique<BodyHot>(store->get((size_t)slot));
     local->exists = false;
-    store->rows[(size_t)slot].exists = false;
+    store->exists[(size_t)slot] = false;
     slot = -1;
 }
 

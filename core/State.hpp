@@ -1,5 +1,5 @@
 // Kinematic state of a body: position, orientation, velocities, mass (1.2.1). The hot part
-// (BodyHot) lives in the scene's BodyStore while the body is in a scene: this object is
+// (BodyHot) lives in the scene's BodyStore columns while the body is in a scene: this object is
 // then a view of its body's entries, and its attributes read and write them.
 #pragma once
 #include <core/BodyStore.hpp>
@@ -18,22 +18,22 @@ public:
     State& operator=(const State&) = delete;
 
     // Each accessor reads the store's column while bound to a body of a scene, else this object's copy.
-    Vector3r& pos() { return field(&BodyRow::pos, &BodyHot::pos); }
-    const Vector3r& pos() const { return field(&BodyRow::pos, &BodyHot::pos); }
-    Vector3r& vel() { return field(&BodyRow::vel, &BodyHot::vel); }
-    const Vector3r& vel() const { return field(&BodyRow::vel, &BodyHot::vel); }
-    Vector3r& angVel() { return field(&BodyRow::angVel, &BodyHot::angVel); }
-    const Vector3r& angVel() const { return field(&BodyRow::angVel, &BodyHot::angVel); }
-    Quaternionr& ori() { return slot >= 0 ? store->ori[(size_t)slot] : local->ori; }
-    const Quaternionr& ori() const { return slot >= 0 ? store->ori[(size_t)slot] : local->ori; }
-    Real& mass() { return field(&BodyRow::mass, &BodyHot::mass); }
-    Real mass() const { return field(&BodyRow::mass, &BodyHot::mass); }
-    Vector3r& inertia() { return field(&BodyRow::inertia, &BodyHot::inertia); }
-    const Vector3r& inertia() const { return field(&BodyRow::inertia, &BodyHot::inertia); }
-    int& blockedDOFsMask() { return field(&BodyRow::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
-    int blockedDOFsMask() const { return field(&BodyRow::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
-    bool& isDamped() { return field(&BodyRow::isDamped, &BodyHot::isDamped); }
-    bool isDamped() const { return field(&BodyRow::isDamped, &BodyHot::isDamped); }
+    Vector3r& pos() { return field(&BodyStore::pos, &BodyHot::pos); }
+    const Vector3r& pos() const { return field(&BodyStore::pos, &BodyHot::pos); }
+    Vector3r& vel() { return field(&BodyStore::vel, &BodyHot::vel); }
+    const Vector3r& vel() const { return field(&BodyStore::vel, &BodyHot::vel); }
+    Vector3r& angVel() { return field(&BodyStore::angVel, &BodyHot::angVel); }
+    const Vector3r& angVel() const { return field(&BodyStore::angVel, &BodyHot::angVel); }
+    Quaternionr& ori() { return field(&BodyStore::ori, &BodyHot::ori); }
+    const Quaternionr& ori() const { return field(&BodyStore::ori, &BodyHot::ori); }
+    Real& mass() { return field(&BodyStore::mass, &BodyHot::mass); }
+    Real mass() const { return field(&BodyStore::mass, &BodyHot::mass); }
+    Vector3r& inertia() { return field(&BodyStore::inertia, &BodyHot::inertia); }
+    const Vector3r& inertia() const { return field(&BodyStore::inertia, &BodyHot::inertia); }
+    int& blockedDOFsMask() { return field(&BodyStore::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
+    int blockedDOFsMask() const { return field(&BodyStore::blockedDOFsMask, &BodyHot::blockedDOFsMask); }
+    bool& isDamped() { return field(&BodyStore::isDamped, &BodyHot::isDamped); }
+    bool isDamped() const { return field(&BodyStore::isDamped, &BodyHot::isDamped); }
     // The whole record (a copy), and what the contact functors read.
     BodyHot hot() const { return slot >= 0 ? store->get((size_t)slot) : *local; }
     Kinematics kinematics() const { return Kinematics{pos(), vel(), angVel(), ori()}; }
@@ -85,11 +85,11 @@ public:
 private:
     std::shared_ptr<BodyStore> store;
     long slot = -1;
-    template <class T> T& field(T BodyRow::*column, T BodyHot::*member) {
-        return slot >= 0 ? store->rows[(size_t)slot].*column : (*local).*member;
+    template <class T> T& field(StableArray<T> BodyStore::*column, T BodyHot::*member) {
+        return slot >= 0 ? (store.get()->*column)[(size_t)slot] : (*local).*member;
     }
-    template <class T> const T& field(T BodyRow::*column, T BodyHot::*member) const {
-        return slot >= 0 ? store->rows[(size_t)slot].*column : (*local).*member;
+    template <class T> const T& field(StableArray<T> BodyStore::*column, T BodyHot::*member) const {
+        return slot >= 0 ? (store.get()->*column)[(size_t)slot] : (*local).*member;
     }
 };
 

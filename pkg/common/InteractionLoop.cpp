@@ -97,7 +97,7 @@ bool InteractionLoop::prepareQuickReject() {
     } else { // from the bodies' records
         quickPos.resize(n);
         const BodyStore& hot = bodies.hot();
-        for (long id = 0; id < n; ++id) quickPos[id] = hot.rows[id].exists ? hot.rows[id].pos : Vector3r::Constant(NaN);
+        for (long id = 0; id < n; ++id) quickPos[id] = hot.exists[id] ? hot.pos[id] : Vector3r::Constant(NaN);
         shapePos = quickPos.data();
     }
     shapeRadius = shapeCache.radius.data();

@@ -46,7 +46,11 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
             const Contact& x = c[ahead];
             prefetchLines(x.geom, 3);
             prefetchLines(x.phys, 2);
-            for (const Body::id_t id : {x.id1, x.id2}) prefetchLines(&cols.rows[id], 2); // (pos, vel; angVel)
+            for (const Body::id_t id : {x.id1, x.id2}) {
+                __builtin_prefetch(&cols.pos[id]);
+                __builtin_prefetch(&cols.vel[id]);
+                __builtin_prefetch(&cols.angVel[id]);
+            }
         }
         const bool two = j + 1 < n;
         const Contact& xa = c[j];

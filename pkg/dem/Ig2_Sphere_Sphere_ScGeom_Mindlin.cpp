@@ -20,7 +20,11 @@ void prefetchContact(const Contact& x, const BodyStore::Columns& cols, const Rea
     prefetchLines(x.geom, 3);
     prefetchLines(x.phys, 5);
     for (const Body::id_t id : {x.id1, x.id2}) {
-        prefetchLines(&cols.rows[id], 2); // (pos, vel, mass, blockedDOFsMask; angVel)
+        __builtin_prefetch(&cols.pos[id]);
+        __builtin_prefetch(&cols.vel[id]);
+        __builtin_prefetch(&cols.angVel[id]);
+        __builtin_prefetch(&cols.mass[id]);
+        __builtin_prefetch(&cols.blockedDOFsMask[id]);
         __builtin_prefetch(&radius[id]);
         if (totals) __builtin_prefetch(&totals[id], 1);
     }
@@ -64,7 +68,7 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact*
         const Two &n0 = g.n0, &n1 = g.n1, &n2 = g.n2, &u = g.depth, &s0 = g.s0, &s1 = g.s1, &s2 = g.s2;
         // Law2_ScGeom_MindlinPhys_Mindlin::go for both lanes (a lane whose bodies separated is
         // handled below, and nothing of its law's arithmetic is kept)
-        const Vector3r &x1a = cols.rows[xa.id1].pos, &x1b = cols.rows[xb.id1].pos, &x2a = cols.rows[xa.id2].pos, &x2b = cols.rows[xb.id2].pos;
+        const Vector3r &x1a = cols.pos[xa.id1], &x1b = cols.pos[xb.id1], &x2a = cols.pos[xa.id2], &x2b = cols.pos[xb.id2];
         const Two d10 = g.c0 - component(x1a, x1b, 0), d11 = g.c1 - component(x1a, x1b, 1), d12 = g.c2 - component(x1a, x1b, 2); // cp - x1
         const Two d20 = g.c0 - component(x2a, x2b, 0), d21 = g.c1 - component(x2a, x2b, 1), d22 = g.c2 - component(x2a, x2b, 2); // cp - x2
         const Two sqrtU = sqrt(u);
@@ -73,8 +77,8 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact*
         const Two kno(pa.kno, pb.kno), kso(pa.kso, pb.kso);
         const Two kn = oneHalf * kno * sqrtU, ks = kso * sqrtU;
         // normal: elastic (Hertz) minus viscous, cut at zero
-        const Vector3r &w1a = cols.rows[xa.id1].angVel, &w1b = cols.rows[xb.id1].angVel, &w2a = cols.rows[xa.id2].angVel, &w2b = cols.rows[xb.id2].angVel;
-        const Vector3r &v1a = cols.rows[xa.id1].vel, &v1b = cols.rows[xb.id1].vel, &v2a = cols.rows[xa.id2].vel, &v2b = cols.rows[xb.id2].vel;
+        const Vector3r &w1a = cols.angVel[xa.id1], &w1b = cols.angVel[xb.id1], &w2a = cols.angVel[xa.id2], &w2b = cols.angVel[xb.id2];
+        const Vector3r &v1a = cols.vel[xa.id1], &v1b = cols.vel[xb.id1], &v2a = cols.vel[xa.id2], &v2b = cols.vel[xb.id2];
         Two e10, e11, e12, e20, e21, e22; // angVel × (cp - x)
         cross(component(w1a, w1b, 0), component(w1a, w1b, 1), component(w1a, w1b, 2), d10, d11, d12, e10, e11, e12);
         cross(component(w2a, w2b, 0), component(w2a, w2b, 1), component(w2a, w2b, 2), d20, d21, d22, e20, e21, e22);

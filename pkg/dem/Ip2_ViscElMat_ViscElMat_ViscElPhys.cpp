@@ -61,7 +61,7 @@ void Ip2_ViscElMat_ViscElMat_ViscElPhys::go(const std::shared_ptr<Material>& m1,
     if (!geom) throw std::runtime_error("Ip2_ViscElMat_ViscElMat_ViscElPhys needs an ScGeom geometry, got " + I.geom->getClassName());
 
     // the reduced mass of the pair (a body of mass 0, a facet or a wall, counts as the other's mass)
-    Real mass1 = scene->bodies.hot().columns().rows[I.id1].mass, mass2 = scene->bodies.hot().columns().rows[I.id2].mass;
+    Real mass1 = scene->bodies.hot().columns().mass[I.id1], mass2 = scene->bodies.hot().columns().mass[I.id2];
     if (mass1 == 0) mass1 = mass2;
     if (mass2 == 0) mass2 = mass1;
     const Real massR = mass1 + mass2 > 0 ? mass1 * mass2 / (mass1 + mass2) : 0;

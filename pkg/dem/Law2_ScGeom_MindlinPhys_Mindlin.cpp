@@ -65,14 +65,14 @@ bool Law2_ScGeom_MindlinPhys_Mindlin::go(ScGeom& geom, MindlinPhys& phys, const 
     const Real dt = s.dt;
     const BodyStore::Columns b = const_cast<Scene&>(s).bodies.hot().columns();
     const Vector3r n = geom.normal, cp = geom.contactPoint;
-    const Vector3r x1 = b.rows[c.id1].pos, x2 = b.rows[c.id2].pos;
+    const Vector3r x1 = b.pos[c.id1], x2 = b.pos[c.id2];
     const Real sqrtU = std::sqrt(u);
     const Real mbar = effectiveMass(b, c.id1, c.id2);
     phys.kn = 1.5 * phys.kno * sqrtU; // tangent stiffnesses
     phys.ks = phys.kso * sqrtU;
 
     // normal: elastic (Hertz) minus viscous; cut at zero (no attraction) unless adhesive
-    const Vector3r relVel = (b.rows[c.id2].vel + b.rows[c.id2].angVel.cross(cp - x2)) - (b.rows[c.id1].vel + b.rows[c.id1].angVel.cross(cp - x1));
+    const Vector3r relVel = (b.vel[c.id2] + b.angVel[c.id2].cross(cp - x2)) - (b.vel[c.id1] + b.angVel[c.id1].cross(cp - x1));
     const Real vn = relVel.dot(n);
     const Real fnElastic = phys.kno * u * sqrtU;
     const Real cn = phys.betan > 0 ? 2 * phys.betan * std::sqrt(mbar * phys.kn) : 0;
@@ -123,7 +123,7 @@ bool Law2_ScGeom_MindlinPhys_Mindlin::go(ScGeom& geom, MindlinPhys& phys, const 
     const Vector3r f1 = -(phys.normalForce + shearForce); // on body 1
     Vector3r t1 = (cp - x1).cross(f1), t2 = (cp - x2).cross(-f1);
     if (includeMoment) {
-        const Vector3r relRot = (b.rows[c.id2].angVel - b.rows[c.id1].angVel) * dt;
+        const Vector3r relRot = (b.angVel[c.id2] - b.angVel[c.id1]) * dt;
         const Vector3r twist = relRot.dot(n) * n, bend = relRot - twist;
         phys.momentTwist = geom.rotated(phys.momentTwist) - phys.ktw * twist;
         phys.momentBend = geom.rotated(phys.momentBend) - phys.kr * bend;

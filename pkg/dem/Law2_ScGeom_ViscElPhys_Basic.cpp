@@ -11,9 +11,9 @@ bool Law2_ScGeom_ViscElPhys_Basic::go(ScGeom& geom, ViscElPhys& phys, const Cont
     const Real dt = scene->dt;
     const BodyStore::Columns b = scene->bodies.hot().columns();
     const Vector3r n = geom.normal, cp = geom.contactPoint;
-    const Vector3r arm1 = cp - b.rows[c.id1].pos, arm2 = cp - b.rows[c.id2].pos;
-    const Vector3r spin1 = b.rows[c.id1].angVel.cross(arm1), spin2 = b.rows[c.id2].angVel.cross(arm2);
-    const Vector3r relVel = (b.rows[c.id2].vel + spin2) - (b.rows[c.id1].vel + spin1); // of body 2's surface, at the contact point
+    const Vector3r arm1 = cp - b.pos[c.id1], arm2 = cp - b.pos[c.id2];
+    const Vector3r spin1 = b.angVel[c.id1].cross(arm1), spin2 = b.angVel[c.id2].cross(arm2);
+    const Vector3r relVel = (b.vel[c.id2] + spin2) - (b.vel[c.id1] + spin1); // of body 2's surface, at the contact point
 
     // normal: spring and dashpot in parallel; nothing while they pull (the contact is kept)
     const Real vn = relVel.dot(n);
@@ -42,7 +42,7 @@ bool Law2_ScGeom_ViscElPhys_Basic::go(ScGeom& geom, ViscElPhys& phys, const Cont
     const Vector3r f1 = -(phys.normalForce + shear); // on body 1
     Vector3r t1 = arm1.cross(f1), t2 = arm2.cross(-f1);
     if (phys.mR > 0) { // rolling resistance, against the relative spin: mRtype 1 mR·fn·Δω, mRtype 2 also times |Δ(ω × arm)|
-        const Vector3r dw = b.rows[c.id1].angVel - b.rows[c.id2].angVel;
+        const Vector3r dw = b.angVel[c.id1] - b.angVel[c.id2];
         const Real k = phys.mR * fn * (phys.mRtype == 2 ? (spin1 - spin2).norm() : 1);
         t1 -= k * dw;
         t2 += k * dw;

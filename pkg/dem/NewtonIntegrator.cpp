@@ -48,7 +48,7 @@ static constexpr int allRotations = State::DOF_RX | State::DOF_RY | State::DOF_R
 static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0, long b1, Real dt) {
     for (long id = b0; id < b1; ++id) {
         if (!spins[id]) continue;
-        const Vector3r& angVel = h.rows[id].angVel;
+        const Vector3r& angVel = h.angVel[id];
         const Real w = angVel.norm(), angle = w * dt;
         if (angle == 0) continue;
         if (spins[id] == 2) { // a body turned by an engine (facets of a drum): the turn as the reference computes it
@@ -219,23 +219,23 @@ void NewtonIntegrator::action() {
         const long b1 = std::min(hi, b0 + chunkBodies);
         for (long id = b0; id < b1; ++id) {
             spins[id] = false;
-            if (!h.rows[id].exists) { // (the State of a body is a view of its entries in these columns)
+            if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
                 mir[id] = Vector3r::Constant(NaN);
                 continue;
             }
-            Vector3r& statePos = h.rows[id].pos;
+            Vector3r& statePos = h.pos[id];
             mir[id] = statePos; // replaced below by the new position
-            if (moveMask != -1 && !(h.rows[id].mask & moveMask)) continue; // bodies outside the mask are not moved
-            const int blocked = h.rows[id].blockedDOFsMask;
-            const Real mass = h.rows[id].mass;
-            const Vector3r& inertia = h.rows[id].inertia;
+            if (moveMask != -1 && !(h.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
+            const int blocked = h.blockedDOFsMask[id];
+            const Real mass = h.mass[id];
+            const Vector3r& inertia = h.inertia[id];
             const bool dynamic = blocked != State::DOF_ALL;
-            Vector3r vel = h.rows[id].vel, angVel = h.rows[id].angVel;
+            Vector3r vel = h.vel[id], angVel = h.angVel[id];
             Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
             Quaternionr newOri; // (an aspherical body's, when turned)
             bool turned = false;
             if (dynamic) {
-                const bool damped = lambda != 0 && h.rows[id].isDamped;
+                const bool damped = lambda != 0 && h.isDamped[id];
                 Vector3r accel = accelOf(FT[id].force, Vector3r::Constant(mass), blocked, 0);
                 const Vector3r gFree = freeGravity(g, blocked);
                 if (gravityDamped) accel += gFree;
@@ -293,8 +293,8 @@ void NewtonIntegrator::action() {
                 diverged = std::max(diverged, id);
                 continue;
             }
-            h.rows[id].vel = vel;
-            h.rows[id].angVel = angVel;
+            h.vel[id] = vel;
+            h.angVel[id] = angVel;
             statePos = pos;
             mir[id] = pos;
             if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)

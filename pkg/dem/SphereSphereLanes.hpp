@@ -36,7 +36,7 @@ inline SphereSphereGeom sphereSphereGeom(const BodyStore::Columns& cols, const R
     g.r1 = Two(radius[id1a], radius[id1b]);
     g.r2 = Two(radius[id2a], radius[id2b]);
     const Two r1 = g.r1, r2 = g.r2;
-    const Vector3r &p1a = cols.rows[id1a].pos, &p1b = cols.rows[id1b].pos, &p2a = cols.rows[id2a].pos, &p2b = cols.rows[id2b].pos;
+    const Vector3r &p1a = cols.pos[id1a], &p1b = cols.pos[id1b], &p2a = cols.pos[id2a], &p2b = cols.pos[id2b];
     // Ig2_Sphere_Sphere_ScGeom::go (shift2 = 0)
     const Two p10 = component(p1a, p1b, 0), p11 = component(p1a, p1b, 1), p12 = component(p1a, p1b, 2);
     Two n0 = (component(p2a, p2b, 0) + zero) - p10, n1 = (component(p2a, p2b, 1) + zero) - p11, n2 = (component(p2a, p2b, 2) + zero) - p12;
@@ -55,8 +55,8 @@ inline SphereSphereGeom sphereSphereGeom(const BodyStore::Columns& cols, const R
     r1.store(ga.refR1, gb.refR1);
     r2.store(ga.refR2, gb.refR2);
     // ScGeom::precompute (an existing contact, avoidRatcheting)
-    const Vector3r &v1a = cols.rows[id1a].vel, &v1b = cols.rows[id1b].vel, &v2a = cols.rows[id2a].vel, &v2b = cols.rows[id2b].vel;
-    const Vector3r &w1a = cols.rows[id1a].angVel, &w1b = cols.rows[id1b].angVel, &w2a = cols.rows[id2a].angVel, &w2b = cols.rows[id2b].angVel;
+    const Vector3r &v1a = cols.vel[id1a], &v1b = cols.vel[id1b], &v2a = cols.vel[id2a], &v2b = cols.vel[id2b];
+    const Vector3r &w1a = cols.angVel[id1a], &w1b = cols.angVel[id1b], &w2a = cols.angVel[id2a], &w2b = cols.angVel[id2b];
     const Two w10 = component(w1a, w1b, 0), w11 = component(w1a, w1b, 1), w12 = component(w1a, w1b, 2);
     const Two w20 = component(w2a, w2b, 0), w21 = component(w2a, w2b, 1), w22 = component(w2a, w2b, 2);
     const Two o0 = component(ga.normal, gb.normal, 0), o1 = component(ga.normal, gb.normal, 1), o2 = component(ga.normal, gb.normal, 2);

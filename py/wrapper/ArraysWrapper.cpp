@@ -66,19 +66,17 @@ BodyArrays bodyArrays() {
     }
     const py::capsule readOnly = ownerOf(s, false), writes = ownerOf(s, true);
     BodyArrays r;
-    BodyRow* rows = st.rows.data();
-    const size_t row = sizeof(BodyRow);
-    r.arrays["pos"] = view(&rows->pos, n, 3, true, writes, row);
-    r.arrays["vel"] = view(&rows->vel, n, 3, true, readOnly, row);
-    r.arrays["angVel"] = view(&rows->angVel, n, 3, true, readOnly, row);
+    r.arrays["pos"] = view(st.pos.data(), n, 3, true, writes);
+    r.arrays["vel"] = view(st.vel.data(), n, 3, true, readOnly);
+    r.arrays["angVel"] = view(st.angVel.data(), n, 3, true, readOnly);
     r.arrays["ori"] = view(st.ori.data(), n, 4, true, readOnly);
-    r.arrays["mass"] = view(&rows->mass, n, 0, true, readOnly, row);
-    r.arrays["inertia"] = view(&rows->inertia, n, 3, true, readOnly, row);
+    r.arrays["mass"] = view(st.mass.data(), n, 0, true, readOnly);
+    r.arrays["inertia"] = view(st.inertia.data(), n, 3, true, readOnly);
     auto* totals = const_cast<ForceContainer::Totals*>(s->forces.totalsData()); // (read-only views)
     r.arrays["force"] = view(&totals->force, n, 3, false, readOnly, sizeof(ForceContainer::Totals));
     r.arrays["torque"] = view(&totals->torque, n, 3, false, readOnly, sizeof(ForceContainer::Totals));
     r.arrays["radius"] = view(st.radius.data(), n, 0, false, readOnly);
-    r.arrays["exists"] = view(&rows->exists, n, 0, false, readOnly, row);
+    r.arrays["exists"] = view(st.exists.data(), n, 0, false, readOnly);
     return r;
 }
 

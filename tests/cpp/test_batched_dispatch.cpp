@@ -77,7 +77,7 @@ std::vector<Vector3r> forcesAfter(std::shared_ptr<IGeomFunctor> ig2, std::shared
     for (int k = 0; k < steps; ++k) {
         s.forces.reset();
         loop->action();
-        for (size_t id = 0; id < s.bodies.size(); ++id) s.bodies.hot().rows[id].pos += 1e-6 * s.bodies.hot().rows[id].vel; // (a move between passes)
+        for (size_t id = 0; id < s.bodies.size(); ++id) s.bodies.hot().pos[id] += 1e-6 * s.bodies.hot().vel[id]; // (a move between passes)
         ++s.iter;
     }
     s.forces.sync();
@@ -113,15 +113,15 @@ TEST(BodyStore, StateIsAViewWhileItsBodyIsInTheScene) {
     auto b = std::make_shared<Body>();
     b->state->pos() = Vector3r(1, 2, 3);
     s.appendBody(b);
-    EXPECT_EQ(s.bodies.hot().rows[0].pos, Vector3r(1, 2, 3));
-    s.bodies.hot().rows[0].vel = Vector3r(4, 5, 6);
+    EXPECT_EQ(s.bodies.hot().pos[0], Vector3r(1, 2, 3));
+    s.bodies.hot().vel[0] = Vector3r(4, 5, 6);
     EXPECT_EQ(b->state->vel(), Vector3r(4, 5, 6));
     const AttrInfo* pos = ClassRegistry::instance().get(typeid(State)).findAttr("pos");
     *static_cast<Vector3r*>(pos->address(*b->state)) = Vector3r(7, 8, 9); // as Python and the loader write it
-    EXPECT_EQ(s.bodies.hot().rows[0].pos, Vector3r(7, 8, 9));
+    EXPECT_EQ(s.bodies.hot().pos[0], Vector3r(7, 8, 9));
     auto st = b->state;
     s.eraseBody(0);
-    EXPECT_FALSE(s.bodies.hot().rows[0].exists);
+    EXPECT_FALSE(s.bodies.hot().exists[0]);
     EXPECT_EQ(st->pos(), Vector3r(7, 8, 9)); // its own copy again
     EXPECT_EQ(st->vel(), Vector3r(4, 5, 6));
 }
