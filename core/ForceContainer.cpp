@@ -12,16 +12,17 @@ void ForceContainer::setThreads(int n) {
 }
 
 void ForceContainer::resize(size_t n) {
-    if (n == totals.size()) return; // (called at every step)
+    if (n == force.size()) return; // (called at every step)
     sync();
-    totals.resize(n);
+    force.resize(n, Vector3r::Zero());
+    torque.resize(n, Vector3r::Zero());
     for (auto* v : {&permForce, &permTorque}) v->resize(n, Vector3r::Zero());
     setRanges();
     synced = false;
 }
 
 void ForceContainer::setRanges() {
-    const long parts = (long)remote.size(), n = (long)totals.size();
+    const long parts = (long)remote.size(), n = (long)force.size();
     rangeStart.resize(parts + 1);
     for (long t = 0; t < parts; ++t) rangeStart[t] = (int)threadRange(n, t, parts).first;
     rangeStart[parts] = (int)n;
@@ -29,14 +30,14 @@ void ForceContainer::setRanges() {
 
 void ForceContainer::addPermForce(int id, const Vector3r& f) {
     permForce[id] += f;
-    if (permInTotals) totals[id].force += f; // (this step's totals got the permanent forces already)
+    if (permInTotals) force[id] += f; // (this step's totals got the permanent forces already)
     anyPermanent = true;
     synced = clean = false;
 }
 
 void ForceContainer::addPermTorque(int id, const Vector3r& t) {
     permTorque[id] += t;
-    if (permInTotals) totals[id].torque += t;
+    if (permInTotals) torque[id] += t;
     anyPermanent = true;
     synced = clean = false;
 }
@@ -46,7 +47,7 @@ void ForceContainer::addPermTorque(int id, const Vector3r& t) {
 void ForceContainer::sync() {
     if (synced) return;
     ++syncCount;
-    const size_t n = totals.size();
+    const size_t n = force.size();
     for (auto& list : remote) {
         for (const Contribution& c : list.items)
             if ((size_t)c.id < n) addInPlace(c); // (bodies removed since: dropped)
@@ -54,8 +55,8 @@ void ForceContainer::sync() {
     }
     if (anyPermanent && !permInTotals) {
         for (size_t i = 0; i < n; ++i) {
-            totals[i].force += permForce[i];
-            totals[i].torque += permTorque[i];
+            force[i] += permForce[i];
+            torque[i] += permTorque[i];
         }
         permInTotals = true;
         clean = false;
@@ -72,13 +73,14 @@ void ForceContainer::reset() {
     permInTotals = synced = false;
     if (clean) return; // nothing was added since the last reset
     for (auto& list : remote) list.items.clear();
-    const long n = (long)totals.size();
+    const long n = (long)force.size();
     const long nThreads = (long)remote.size();
     // each thread clears its own range: the entries it adds to next (their cache lines stay with one core)
 #pragma omp parallel if (nThreads > 1 && n > 2000) num_threads(nThreads)
     {
         const auto range = myThreadRange(n);
-        std::memset(static_cast<void*>(totals.data() + range.first), 0, sizeof(Totals) * (range.second - range.first));
+        std::memset(static_cast<void*>(force.data() + range.first), 0, sizeof(Vector3r) * (range.second - range.first));
+        std::memset(static_cast<void*>(torque.data() + range.first), 0, sizeof(Vector3r) * (range.second - range.first));
     }
     clean = true;
 }

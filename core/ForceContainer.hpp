@@ -6,9 +6,6 @@
 // so that a run is reproducible for a given thread count; only the few remote contributions
 // (contacts across two ranges) cross between cores, and a range's entries stay with the core
 // that adds to them, integrates them and zeroes them.
-// A body's force and torque totals lie in one cache line (Totals): a contact loop that adds to
-// bodies in no order in memory (spheres read from a file) then loads and writes one line per body
-// instead of two.
 #pragma once
 #include <core/BodyStore.hpp>
 #include <lib/base/Math.hpp>
@@ -22,25 +19,21 @@ namespace yade {
 
 class ForceContainer {
 public:
-    // One body's totals: force then torque, a cache line (the NumPy views step over the padding)
-    struct alignas(64) Totals {
-        Vector3r force = Vector3r::Zero(), torque = Vector3r::Zero();
-    };
     ForceContainer() { setThreads(1); }
     void setThreads(int n);
     int threads() const { return (int)remote.size(); }
     void resize(size_t nBodies);
-    size_t size() const { return totals.size(); }
+    size_t size() const { return force.size(); }
     void addForce(int id, const Vector3r& f) { put(thread(), {id, Contribution::force, f, Vector3r::Zero()}); }
     void addTorque(int id, const Vector3r& t) { put(thread(), {id, Contribution::torque, Vector3r::Zero(), t}); }
     // A contact's force on body 1 (its opposite on body 2) and the torques on both.
     void addContact(int id1, int id2, const Vector3r& f1, const Vector3r& t1, const Vector3r& t2) {
         const int th = thread();
         if (!remote[th].capture && owns(th, id1) && owns(th, id2)) { // the common case: both in place (as addInPlace)
-            totals[id1].force += f1;
-            totals[id1].torque += t1;
-            totals[id2].force -= f1;
-            totals[id2].torque += t2;
+            force[id1] += f1;
+            torque[id1] += t1;
+            force[id2] -= f1;
+            torque[id2] += t2;
             markUnsynced();
             return;
         }
@@ -49,20 +42,22 @@ public:
     }
     // With one thread and nothing captured every add goes in place: a contact loop may then take
     // the totals once and add to them itself (calling markAdded() once); null otherwise (use addContact).
-    Totals* inPlaceTotals() { return remote.size() == 1 && !remote[0].capture ? totals.data() : nullptr; }
+    Vector3r* inPlaceForces() { return remote.size() == 1 && !remote[0].capture ? force.data() : nullptr; }
+    Vector3r* inPlaceTorques() { return remote.size() == 1 && !remote[0].capture ? torque.data() : nullptr; }
     void markAdded() { markUnsynced(); }
     // Forces that stay from step to step (set from Python with permanent=True).
     void addPermForce(int id, const Vector3r& f);
     void addPermTorque(int id, const Vector3r& t);
-    const Vector3r& getForce(int id) { sync(); return totals[id].force; }
-    const Vector3r& getTorque(int id) { sync(); return totals[id].torque; }
+    const Vector3r& getForce(int id) { sync(); return force[id]; }
+    const Vector3r& getTorque(int id) { sync(); return torque[id]; }
     const Vector3r& getPermForce(int id) const { return permForce[id]; }
     const Vector3r& getPermTorque(int id) const { return permTorque[id]; }
     // Adds the remote contributions (and, once per step, the permanent forces) to the totals.
     void sync();
     long long syncCount = 0; // O.forceSyncCount: syncs that had something to add (for profiling)
     // The totals (call sync() first), for loops over all bodies.
-    const Totals* totalsData() const { return totals.data(); }
+    const Vector3r* forceData() const { return force.data(); }
+    const Vector3r* torqueData() const { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     long long lastReset = -1; // the step in which ForceResetter last ran (NewtonIntegrator.warnNoForceReset)
     bool hasPermanent() const { return anyPermanent; }
@@ -98,8 +93,8 @@ private:
         markUnsynced();
     }
     void addInPlace(const Contribution& c) {
-        if (c.kind != Contribution::torque) totals[c.id].force += c.f;
-        if (c.kind != Contribution::force) totals[c.id].torque += c.t;
+        if (c.kind != Contribution::torque) force[c.id] += c.f;
+        if (c.kind != Contribution::force) torque[c.id] += c.t;
     }
     void setRanges();
     int thread() const { // (with one thread, no library call)
@@ -110,7 +105,7 @@ private:
 #endif
     }
     // [body]; the totals never move (NumPy views of them stay valid, see BodyArrays)
-    StableArray<Totals> totals{BodyStore::maxBodies};
+    StableArray<Vector3r> force{BodyStore::maxBodies}, torque{BodyStore::maxBodies};
     std::vector<Vector3r> permForce, permTorque;
     struct alignas(64) RemoteList { // (a cache line each: the threads append to their own lists at the same time)
         std::vector<Contribution> items; // to other ranges, in the order added

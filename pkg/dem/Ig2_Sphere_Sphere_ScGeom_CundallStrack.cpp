@@ -38,7 +38,8 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
     const Two half(0.5);
     const bool neverErase = cundallStrack.neverErase;
     ForceContainer& forces = scene->forces;
-    ForceContainer::Totals* const totals = forces.inPlaceTotals(); // (one thread: adds in place, as addContact would)
+    Vector3r* const force = forces.inPlaceForces(); // (one thread: adds in place, as addContact would)
+    Vector3r* const torque = forces.inPlaceTorques();
     ScGeom spareGeom; // (the second lane of an odd last contact writes here)
     FrictPhys sparePhys;
     for (size_t j = 0; j < n; j += 2) {
@@ -97,17 +98,17 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithLaw(const BodyColumns& b, Contact* c, 
             p.normalForce = Vector3r(at(f0), at(f1), at(f2));
             p.shearForce = Vector3r(at(e0), at(e1), at(e2));
             const Vector3r F(at(F0), at(F1), at(F2)), T1(at(T10), at(T11), at(T12)), T2(at(T20), at(T21), at(T22));
-            if (totals) {
-                totals[x.id1].force += F;
-                totals[x.id1].torque += T1;
-                totals[x.id2].force -= F;
-                totals[x.id2].torque += T2;
+            if (force) {
+                force[x.id1] += F;
+                torque[x.id1] += T1;
+                force[x.id2] -= F;
+                torque[x.id2] += T2;
             } else
                 forces.addContact(x.id1, x.id2, F, T1, T2);
             keep[j + lane] = true;
         }
     }
-    if (totals && n) forces.markAdded();
+    if (force && n) forces.markAdded();
 }
 
 } // namespace yade

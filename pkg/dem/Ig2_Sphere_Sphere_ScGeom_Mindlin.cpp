@@ -16,7 +16,7 @@ using namespace lanes;
 
 namespace {
 // What the contacts a few places on will read: their records and their bodies' entries.
-void prefetchContact(const Contact& x, const BodyStore::Columns& cols, const Real* radius, const ForceContainer::Totals* totals) {
+void prefetchContact(const Contact& x, const BodyStore::Columns& cols, const Real* radius, const Vector3r* force, const Vector3r* torque) {
     prefetchLines(x.geom, 3);
     prefetchLines(x.phys, 5);
     for (const Body::id_t id : {x.id1, x.id2}) {
@@ -26,7 +26,10 @@ void prefetchContact(const Contact& x, const BodyStore::Columns& cols, const Rea
         __builtin_prefetch(&cols.mass[id]);
         __builtin_prefetch(&cols.blockedDOFsMask[id]);
         __builtin_prefetch(&radius[id]);
-        if (totals) __builtin_prefetch(&totals[id], 1);
+        if (force) {
+            __builtin_prefetch(&force[id], 1);
+            __builtin_prefetch(&torque[id], 1);
+        }
     }
 }
 // a × b, componentwise as Eigen's cross()
@@ -41,10 +44,11 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact*
     const BodyStore::Columns cols = b.store;
     const Real* radius = b.radius;
     ForceContainer& forces = scene->forces;
-    ForceContainer::Totals* const totals = forces.inPlaceTotals(); // (one thread: adds in place, as addContact would)
+    Vector3r* const force = forces.inPlaceForces(); // (one thread: adds in place, as addContact would)
+    Vector3r* const torque = forces.inPlaceTorques();
     if (law.includeAdhesion || law.includeMoment || law.calcEnergy) { // (the functors, contact by contact)
         for (size_t j = 0; j < n; ++j) {
-            if (j + lookahead < n) prefetchContact(c[j + lookahead], cols, radius, totals);
+            if (j + lookahead < n) prefetchContact(c[j + lookahead], cols, radius, force, torque);
             Contact& x = c[j];
             go(radius[x.id1], radius[x.id2], cols.kinematics(x.id1), cols.kinematics(x.id2), Vector3r::Zero(), false, x);
             keep[j] = law.go(static_cast<ScGeom&>(*x.geom), static_cast<MindlinPhys&>(*x.phys), x);
@@ -56,7 +60,7 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact*
     ScGeom spareGeom; // (the second lane of an odd last contact writes here)
     MindlinPhys sparePhys;
     for (size_t j = 0; j < n; j += 2) {
-        for (size_t ahead = j + lookahead; ahead < std::min(n, j + lookahead + 2); ++ahead) prefetchContact(c[ahead], cols, radius, totals);
+        for (size_t ahead = j + lookahead; ahead < std::min(n, j + lookahead + 2); ++ahead) prefetchContact(c[ahead], cols, radius, force, torque);
         const bool both = j + 1 < n;
         const Contact& xa = c[j];
         const Contact& xb = both ? c[j + 1] : c[j];
@@ -150,17 +154,17 @@ void Ig2_Sphere_Sphere_ScGeom::goBatchWithMindlin(const BodyColumns& b, Contact*
             p.usElastic = vec(ue0, ue1, ue2);
             p.shearForce = vec(sf0, sf1, sf2);
             const Vector3r F = vec(F0, F1, F2), T1 = vec(T10, T11, T12), T2 = vec(T20, T21, T22);
-            if (totals) {
-                totals[x.id1].force += F;
-                totals[x.id1].torque += T1;
-                totals[x.id2].force -= F;
-                totals[x.id2].torque += T2;
+            if (force) {
+                force[x.id1] += F;
+                torque[x.id1] += T1;
+                force[x.id2] -= F;
+                torque[x.id2] += T2;
             } else
                 forces.addContact(x.id1, x.id2, F, T1, T2);
             keep[j + lane] = true;
         }
     }
-    if (totals && n) forces.markAdded();
+    if (force && n) forces.markAdded();
 }
 
 } // namespace yade

@@ -165,7 +165,8 @@ void NewtonIntegrator::action() {
     if (stabilityCheckPeriod > 0) lastCheckedDt = dt;
     if (full) crit = criticalTimeStep(s, true);
     // the members as constants, so that the compiler keeps them in registers across the stores below
-    const ForceContainer::Totals* totals = s.forces.totalsData();
+    const Vector3r* forces = s.forces.forceData();
+    const Vector3r* torques = s.forces.torqueData();
     const Vector3r g = gravity;
     const Real lambda = damping;
     const bool gravityDamped = dampGravity;
@@ -212,7 +213,8 @@ void NewtonIntegrator::action() {
     // compiler reload each base pointer)
     const BodyStore::Columns h = hot;
     Vector3r* const mir = mirror.data();
-    const ForceContainer::Totals* const FT = totals;
+    const Vector3r* const F = forces;
+    const Vector3r* const T = torques;
     char* const spins = spinning.data();
     // (a block of bodies at a time: the second loop finds their spins and orientations in cache)
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
@@ -236,18 +238,18 @@ void NewtonIntegrator::action() {
             bool turned = false;
             if (dynamic) {
                 const bool damped = lambda != 0 && h.isDamped[id];
-                Vector3r accel = accelOf(FT[id].force, Vector3r::Constant(mass), blocked, 0);
+                Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
                 const Vector3r gFree = freeGravity(g, blocked);
                 if (gravityDamped) accel += gFree;
                 const Vector3r undamped = accel;
                 if (damped) damp(accel, vel, dt, lambda);
                 if (!gravityDamped) accel += gFree;
                 // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
-                const bool still = (angVel.array() == 0).all() && (FT[id].torque.array() == 0).all() && (inertia.array() > 0).all();
+                const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
                 // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
                 if (__builtin_expect(unequalMoments(inertia), 0) && aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
                         && (inertia.array() > 0).all()) {
-                    const AsphericalTurn t = turnAspherical(h.ori[id], angVel, FT[id].torque, inertia, dt, damped ? lambda : 0);
+                    const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
                     newOri = t.ori;
                     turned = true;
                     if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
@@ -265,7 +267,7 @@ void NewtonIntegrator::action() {
                     vel += dt * accel;
                     angVel = t.angVel;
                 } else {
-                    Vector3r angAccel = still ? Vector3r::Zero() : accelOf(FT[id].torque, inertia, blocked, 3);
+                    Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
                     const Vector3r angUndamped = angAccel;
                     if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
                     if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)

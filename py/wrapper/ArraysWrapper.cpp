@@ -33,10 +33,9 @@ py::capsule ownerOf(const std::shared_ptr<Scene>& s, bool writesPositions) {
     return py::capsule(o, [](void* p) { delete static_cast<ViewOwner*>(p); });
 }
 
-// An n × columns array of doubles (columns = 0: a vector) over `data`, `stride` bytes per row
-// (0: sizeof(T), the rows packed).
-template <class T> py::array view(T* data, size_t n, size_t columns, bool writable, const py::capsule& owner, size_t stride = 0) {
-    std::vector<py::ssize_t> shape{(py::ssize_t)n}, strides{(py::ssize_t)(stride ? stride : sizeof(T))};
+// An n × columns array of doubles (columns = 0: a vector) over `data`, `stride` bytes per row.
+template <class T> py::array view(T* data, size_t n, size_t columns, bool writable, const py::capsule& owner) {
+    std::vector<py::ssize_t> shape{(py::ssize_t)n}, strides{(py::ssize_t)sizeof(T)};
     if (columns) {
         shape.push_back((py::ssize_t)columns);
         strides.push_back((py::ssize_t)(sizeof(T) / columns));
@@ -72,9 +71,8 @@ BodyArrays bodyArrays() {
     r.arrays["ori"] = view(st.ori.data(), n, 4, true, readOnly);
     r.arrays["mass"] = view(st.mass.data(), n, 0, true, readOnly);
     r.arrays["inertia"] = view(st.inertia.data(), n, 3, true, readOnly);
-    auto* totals = const_cast<ForceContainer::Totals*>(s->forces.totalsData()); // (read-only views)
-    r.arrays["force"] = view(&totals->force, n, 3, false, readOnly, sizeof(ForceContainer::Totals));
-    r.arrays["torque"] = view(&totals->torque, n, 3, false, readOnly, sizeof(ForceContainer::Totals));
+    r.arrays["force"] = view(const_cast<Vector3r*>(s->forces.forceData()), n, 3, false, readOnly); // (read-only views)
+    r.arrays["torque"] = view(const_cast<Vector3r*>(s->forces.torqueData()), n, 3, false, readOnly);
     r.arrays["radius"] = view(st.radius.data(), n, 0, false, readOnly);
     r.arrays["exists"] = view(st.exists.data(), n, 0, false, readOnly);
     return r;
