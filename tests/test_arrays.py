@@ -210,3 +210,21 @@ def test_new_law_functors_replace_the_ones_chosen_before():
     i = O.interactions[0, 1]
     assert i.isReal and i.geom.penetrationDepth < 0     # kept by the new functor (the old one would erase it)
     assert tuple(i.phys.normalForce) == (0, 0, 0)
+
+
+def test_every_view_shows_each_body_s_own_entries():
+    """Each row of each NumPy view is its body's value (State and O.forces agree), a hole included."""
+    lattice(n=3)
+    O.bodies.erase(4)
+    a = O.bodies.arrays()
+    for i in range(len(O.bodies)):
+        b = O.bodies[i]
+        if b is None:
+            assert not a.exists[i]
+            continue
+        assert a.exists[i]
+        assert tuple(a.pos[i]) == tuple(b.state.pos) and tuple(a.vel[i]) == tuple(b.state.vel)
+        assert tuple(a.angVel[i]) == tuple(b.state.angVel) and tuple(a.inertia[i]) == tuple(b.state.inertia)
+        assert a.mass[i] == b.state.mass
+        assert tuple(a.force[i]) == tuple(O.forces.f(i)) and tuple(a.torque[i]) == tuple(O.forces.t(i))
+    assert np.abs(a.force).max() > 0 and np.abs(a.torque).max() > 0
