@@ -38,7 +38,7 @@ public:
     BodyHot hot() const { return slot >= 0 ? store->get((size_t)slot) : *local; }
     Kinematics kinematics() const { return Kinematics{pos(), vel(), angVel(), ori()}; }
     // For AttrCollector: attributes declared on members of `local` are read and written here.
-    void* hotAddress(std::ptrdiff_t offset) {
+    void* sideAddress(std::ptrdiff_t offset) {
         return slot >= 0 ? store->fieldAddress(offset, (size_t)slot) : reinterpret_cast<char*>(local.get()) + offset;
     }
 
@@ -53,8 +53,8 @@ public:
 
     // The values while not in a scene (none while bound: 160 bytes less per body).
     std::unique_ptr<BodyHot> local = std::make_unique<BodyHot>();
-    using HotRecord = BodyHot;
-    const BodyHot* hotRecord() const { return local.get(); } // (AttrCollector, on an unbound prototype)
+    using SideRecord = BodyHot;
+    const BodyHot* sideRecord() const { return local.get(); } // (AttrCollector, on an unbound prototype)
     Vector3r angMom = Vector3r::Zero();
     Vector3r refPos = Vector3r::Zero();
     Quaternionr refOri = Quaternionr::Identity();
@@ -74,7 +74,7 @@ public:
         v.attr("isDamped", local->isDamped, "Whether NewtonIntegrator damping applies to this body");
         v.attr("densityScaling", densityScaling, "Density scaling factor (1: none)", Attr::positive);
     }
-    static constexpr bool hasHotRecord = true; // (AttrCollector: see hotAddress)
+    static constexpr bool hasSideRecord = true; // (AttrCollector: see sideAddress)
     Vector3r displ() const { return pos() - refPos; }
     // Rotation from refOri to ori, as axis times angle.
     Vector3r rot() const;

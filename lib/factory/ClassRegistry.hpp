@@ -74,11 +74,13 @@ private:
     ClassInfo& insert(const char* name, const char* baseName, const std::type_info& t);
 };
 
-// Classes whose hot attributes live elsewhere while bound: T::hasHotRecord, the members of the
-// record T::hotRecord() (of type T::HotRecord) of an unbound object, and T::hotAddress(offset of
-// the member in the record) giving where the value is now.
-template <class T, class = void> struct HasHotRecord : std::false_type {};
-template <class T> struct HasHotRecord<T, std::void_t<decltype(T::hasHotRecord)>> : std::bool_constant<T::hasHotRecord> {};
+// Classes some of whose attributes are members of a record outside the object: T::hasSideRecord,
+// the record T::sideRecord() (of type T::SideRecord) of the prototype, and T::sideAddress(offset of
+// the member in the record) giving where the value of an object is now. A State's hot values are
+// in the scene's BodyStore while it is bound; a MindlinPhys keeps the attributes its law seldom
+// uses in a record of their own, out of the contact's record that the law streams every step.
+template <class T, class = void> struct HasSideRecord : std::false_type {};
+template <class T> struct HasSideRecord<T, std::void_t<decltype(T::hasSideRecord)>> : std::bool_constant<T::hasSideRecord> {};
 
 // Classes whose objects may be views of another object of the same class (a contact's geometry
 // or physics kept in a ContactPool): T::viewTarget() is that object, or null (the object's own
@@ -114,12 +116,17 @@ template <class T> struct AttrCollector {
                 Serializable* target = static_cast<T&>(s).viewTarget();
                 return reinterpret_cast<char*>(static_cast<T*>(target ? target : &s)) + offset;
             };
-        if constexpr (HasHotRecord<T>::value) { // a member of the record kept in a store while bound (State)
-            const char* lo = reinterpret_cast<const char*>(proto.hotRecord());
+        if constexpr (HasSideRecord<T>::value) { // a member of the object's side record
+            const char* lo = reinterpret_cast<const char*>(proto.sideRecord());
             const char* m = reinterpret_cast<const char*>(&member);
-            if (m >= lo && m < lo + sizeof(typename T::HotRecord)) {
+            if (m >= lo && m < lo + sizeof(typename T::SideRecord)) {
                 const std::ptrdiff_t inRecord = m - lo;
-                a.address = [inRecord](Serializable& s) -> void* { return static_cast<T&>(s).hotAddress(inRecord); };
+                a.address = [inRecord](Serializable& s) -> void* { return static_cast<T&>(s).sideAddress(inRecord); };
+                if constexpr (HasViewTarget<T>::value)
+                    a.address = [inRecord](Serializable& s) -> void* {
+                        Serializable* target = static_cast<T&>(s).viewTarget();
+                        return static_cast<T*>(target ? target : &s)->sideAddress(inRecord);
+                    };
             }
         }
         if constexpr (AttrKindOf<M>::kind == AttrKind::Ptr) {

@@ -46,10 +46,13 @@ void Ip2_FrictMat_FrictMat_MindlinPhys::go(const std::shared_ptr<Material>& m1, 
     phys->betan = bn >= 0 ? bn : 0;
     phys->betas = bs >= 0 ? bs : phys->betan;
 
-    phys->kr = krot;
-    phys->ktw = ktwist;
-    phys->maxBendPl = eta;
-    phys->adhesionForce = 4 * M_PI * R * gamma;
+    if (krot != 0 || ktwist != 0 || eta != 0 || gamma != 0) { // (else the defaults, 0: nothing made)
+        MindlinPhys::Extra& x = phys->extra.edit();
+        x.kr = krot;
+        x.ktw = ktwist;
+        x.maxBendPl = eta * 0.5 * (r1 + r2); // (the reference's: eta times the mean radius)
+        x.adhesionForce = 4 * M_PI * R * gamma;
+    }
     I.phys = phys;
 }
 

@@ -27,7 +27,7 @@ public:
         v.attr("betas", betas, "Shear damping ratio (MatchMaker or number; default: betan); not together with es");
         v.attr("frictAngle", frictAngle, "Contact friction angle per pair of materials [rad] (MatchMaker; default: the smaller one)");
         v.attr("gamma", gamma, "Surface energy [J/m²] for DMT adhesion (adhesionForce = 4·π·R*·gamma)", Attr::nonNegative);
-        v.attr("eta", eta, "Coefficient of the plastic bending moment (MindlinPhys.maxBendPl)", Attr::nonNegative);
+        v.attr("eta", eta, "Coefficient of the plastic bending moment: MindlinPhys.maxBendPl is eta times the mean radius of the two bodies", Attr::nonNegative);
         v.attr("krot", krot, "Rolling stiffness (MindlinPhys.kr) [N·m/rad]", Attr::nonNegative);
         v.attr("ktwist", ktwist, "Twisting stiffness (MindlinPhys.ktw) [N·m/rad]", Attr::nonNegative);
     }

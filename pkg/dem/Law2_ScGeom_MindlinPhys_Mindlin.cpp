@@ -79,7 +79,7 @@ bool Law2_ScGeom_MindlinPhys_Mindlin::go(ScGeom& geom, MindlinPhys& phys, const 
     phys.normalViscous = (cn * vn) * n;
     Real fn = fnElastic - cn * vn;
     if (includeAdhesion) {
-        fn -= phys.adhesionForce;
+        fn -= phys.extra.get().adhesionForce;
         phys.isAdhesive = fn < 0;
     } else if (fn < 0) {
         fn = 0;
@@ -91,7 +91,7 @@ bool Law2_ScGeom_MindlinPhys_Mindlin::go(ScGeom& geom, MindlinPhys& phys, const 
     Vector3r fsElastic = geom.rotated(phys.shearElastic) - phys.ks * shearInc;
     phys.usTotal = geom.rotated(phys.usTotal) - shearInc;
     Vector3r usElastic = geom.rotated(phys.usElastic) - shearInc;
-    const Real fnForFriction = includeAdhesion ? fn + phys.adhesionForce : fn;
+    const Real fnForFriction = includeAdhesion ? fn + phys.extra.get().adhesionForce : fn;
     const Real maxFs = phys.tangensOfFrictionAngle * std::max(fnForFriction, Real(0));
     const Real fsNorm = fsElastic.norm();
     Vector3r shearForce;
@@ -125,16 +125,16 @@ bool Law2_ScGeom_MindlinPhys_Mindlin::go(ScGeom& geom, MindlinPhys& phys, const 
     if (includeMoment) {
         const Vector3r relRot = (b.angVel[c.id2] - b.angVel[c.id1]) * dt;
         const Vector3r twist = relRot.dot(n) * n, bend = relRot - twist;
-        phys.momentTwist = geom.rotated(phys.momentTwist) - phys.ktw * twist;
-        phys.momentBend = geom.rotated(phys.momentBend) - phys.kr * bend;
-        if (phys.maxBendPl > 0) {
-            const Real R = geom.refR1 > 0 && geom.refR2 > 0 ? geom.refR1 * geom.refR2 / (geom.refR1 + geom.refR2) : std::max(geom.refR1, geom.refR2);
-            const Real maxBend = phys.maxBendPl * R * std::abs(fn);
-            const Real m = phys.momentBend.norm();
-            if (m > maxBend) phys.momentBend *= maxBend / m;
+        MindlinPhys::Extra& x = phys.extra.edit();
+        x.momentTwist = geom.rotated(x.momentTwist) - x.ktw * twist;
+        x.momentBend = geom.rotated(x.momentBend) - x.kr * bend;
+        if (x.maxBendPl > 0) {
+            const Real maxBend = x.maxBendPl * std::abs(fn);
+            const Real m = x.momentBend.norm();
+            if (m > maxBend) x.momentBend *= maxBend / m;
         }
-        t1 -= phys.momentBend + phys.momentTwist;
-        t2 += phys.momentBend + phys.momentTwist;
+        t1 -= x.momentBend + x.momentTwist;
+        t2 += x.momentBend + x.momentTwist;
     }
     scene->forces.addContact(c.id1, c.id2, f1, t1, t2);
     return true;
