@@ -24,7 +24,6 @@ public:
         if (!made) made = std::make_unique<R>();
         return *made;
     }
-    bool isMade() const { return made != nullptr; }
 
 private:
     std::unique_ptr<R> made;
