@@ -309,3 +309,42 @@ def test_rolling_twisting_moments_and_adhesion_equal_the_reference(adhesion, eta
     for name in ('momentBend', 'momentTwist', 'normalForce', 'shearForce'):
         assert tuple(getattr(p, name)) == pytest.approx(ref[name], rel=1e-12, abs=1e-12 * max(map(abs, ref[name]))), name
     assert tuple(O.bodies[1].state.angVel) == pytest.approx(ref['angVel'], rel=1e-12)
+
+
+# The reference on hertz_linear_shear_scene(nonLin): the spinning, sliding sphere of the moment test pressed on a
+# fixed one under Law2_ScGeom_MindlinPhys_HertzWithLinearShear, 20 steps: forces, velocity, spin.
+LINEAR_SHEAR_REFERENCE = {
+    0: dict(normalForce=(0.0002051336369485635, -2.1584022360739859e-07, 0.2161760681491173),
+            shearForce=(0.0007788279543089762, 0.013037846816386756, -7.26145222207562e-07),
+            vel=(0.009965735312394398, 0.0006504431294771757, 0.05108936634134459),
+            angVel=(0.15265786293329742, 0.9902231114285535, 1.9991724763831642)),
+    1: dict(normalForce=(0.00020590081841744942, 1.3504678181158681e-05, 0.2161748343034764),
+            shearForce=(-1.808228795674102e-05, -0.012235924194744754, 7.838938564490058e-07),
+            vel=(0.010003323345642095, -0.0014910868552495797, 0.051089486832238774),
+            angVel=(-0.530210296444666, 1.0053263481543675, 2.0004204033374564)),
+}
+
+
+@pytest.mark.parametrize('nonLin', sorted(LINEAR_SHEAR_REFERENCE))
+def test_hertz_with_linear_shear_equals_the_reference(nonLin):
+    """Law2_ScGeom_MindlinPhys_HertzWithLinearShear: Hertz normal force, a shear spring of stiffness kso (nonLin 0)
+    or kso·u^(1/2) (nonLin > 0), Coulomb sliding (it slides in the first steps with nonLin 0), no damping; kn and ks
+    stay 0 as there. The reference's numbers after 20 steps, to 1e-10; once the spheres part, the pair goes back to
+    a potential interaction."""
+    from yade import Law2_ScGeom_MindlinPhys_HertzWithLinearShear
+    O.materials.append(FrictMat(young=1e7, poisson=0.3, density=2600, frictionAngle=0.5))
+    O.bodies.append([utils.sphere((0, 0, 0), 0.01, fixed=True), utils.sphere((0, 0, 0.0199), 0.01)])
+    O.bodies[1].state.angVel, O.bodies[1].state.vel = (0.5, 1.0, 2.0), (0.01, 0.003, -0.02)
+    law = Law2_ScGeom_MindlinPhys_HertzWithLinearShear(nonLin=nonLin)
+    assert not law.neverErase
+    O.engines = engines(Ip2_FrictMat_FrictMat_MindlinPhys(), law)[:3] + [NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 1e-4
+    O.run(20, True)
+    p = O.interactions[0, 1].phys
+    ref = LINEAR_SHEAR_REFERENCE[nonLin]
+    for name, got in (('normalForce', p.normalForce), ('shearForce', p.shearForce), ('vel', O.bodies[1].state.vel),
+                      ('angVel', O.bodies[1].state.angVel)):
+        assert tuple(got) == pytest.approx(ref[name], rel=1e-10, abs=1e-10 * max(map(abs, ref[name]))), name
+    assert (p.kn, p.ks) == (0, 0)
+    O.run(20, True)
+    assert len(O.interactions) == 1 and O.interactions.countReal() == 0

@@ -27,16 +27,15 @@ void Ip2_FrictMat_FrictMat_MindlinPhys::go(const std::shared_ptr<Material>& m1, 
     // A radius of 0 or less is a flat boundary: the effective radius is then the other one.
     const Real r1 = geom->refR1, r2 = geom->refR2;
     const Real R = r1 > 0 && r2 > 0 ? r1 * r2 / (r1 + r2) : std::max(r1, r2);
-    const Real E = 1 / ((1 - a.poisson * a.poisson) / a.young + (1 - b.poisson * b.poisson) / b.young);
+    // (E* = 1/((1-ν1²)/E1 + (1-ν2²)/E2) written as the reference computes it: the same bits)
+    const Real E = a.young * b.young / ((1 - a.poisson * a.poisson) * b.young + (1 - b.poisson * b.poisson) * a.young);
     const Real Ga = a.young / (2 * (1 + a.poisson)), Gb = b.young / (2 * (1 + b.poisson));
     const Real G = 1 / ((2 - a.poisson) / Ga + (2 - b.poisson) / Gb);
 
     auto phys = std::make_shared<MindlinPhys>();
     phys->kno = 4. / 3. * E * std::sqrt(R);
     phys->kso = 8 * G * std::sqrt(R);
-    const Real u = std::max(geom->penetrationDepth, Real(0));
-    phys->kn = 1.5 * phys->kno * std::sqrt(u);
-    phys->ks = phys->kso * std::sqrt(u);
+    // (kn and ks are the law's to write, as in the reference: 0 until it runs)
     phys->initD = geom->penetrationDepth;
     const Real angle = frictAngle ? (*frictAngle)(a.id, b.id, a.frictionAngle, b.frictionAngle) : std::min(a.frictionAngle, b.frictionAngle);
     phys->tangensOfFrictionAngle = std::tan(angle);
