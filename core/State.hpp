@@ -61,8 +61,8 @@ public:
     Real densityScaling = 1;
     template <class V> void visit(V& v) {
         Serializable::visit(v);
-        v.attr("pos", local->pos, "Position of the center of mass [m]", Attr::finite);
-        v.attr("ori", local->ori, "Orientation (unit quaternion)");
+        v.attr("pos", local->pos, "Position of the center of mass [m] (read as a copy, as in the reference: `p0 = b.state.pos` keeps the value of that moment)", Attr::finite | Attr::readCopy);
+        v.attr("ori", local->ori, "Orientation (unit quaternion; read as a copy, as pos)", Attr::readCopy);
         v.attr("vel", local->vel, "Linear velocity [m/s]", Attr::finite);
         v.attr("angVel", local->angVel, "Angular velocity [rad/s]", Attr::finite);
         v.attr("angMom", angMom, "Angular momentum (aspherical bodies)", Attr::finite);

@@ -374,14 +374,43 @@ def test_tuple_accepted_for_vector_attribute():
 
 def test_a_view_sees_later_assignments():
     st = State()
-    v = st.pos
-    st.pos = (7, 8, 9)
+    v = st.vel
+    st.vel = (7, 8, 9)
     assert vec(v) == (7, 8, 9)
 
 
+def test_pos_and_ori_are_read_as_copies_as_in_the_reference():
+    # The reference's State.pos and State.ori are properties (copies) while vel, angVel... are views:
+    # `p0 = b.state.pos` then keeps the position of that moment (a script's displacement `pos - p0`).
+    O.reset()
+    O.bodies.append(sphere((0, 0, 0), 1))
+    b = O.bodies[0]
+    O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10))]
+    O.dt = 1e-3
+    p0, q0, v = b.state.pos, b.state.ori, b.state.vel
+    b.state.angVel = (0, 0, 1)
+    O.run(100, True)
+    assert vec(p0) == (0, 0, 0)
+    assert vec(b.state.pos - p0) == pytest.approx((0, 0, -0.0404), rel=1e-12)  # (the reference: -0.040400000000000026)
+    assert b.state.ori != q0
+    assert vec(v) == pytest.approx((0, 0, -0.8), rel=1e-12)  # a view follows its body (damping 0.2: as the reference)
+    q = b.state.pos
+    q[0] = 5  # changes the copy only, as there
+    assert b.state.pos[0] == 0
+    pos, ori = b.state.se3
+    assert vec(pos) == vec(b.state.pos) and ori == b.state.ori
+    b.state.se3 = ((1, 2, 3), Quaternion((0, 0, 1), 0.5))
+    assert vec(b.state.pos) == (1, 2, 3) and b.state.ori.toAxisAngle()[1] == pytest.approx(0.5)
+    with pytest.raises(Exception):
+        b.state.se3 = ((4, 5, 6), "not a quaternion")
+    assert vec(b.state.pos) == (1, 2, 3)  # left as it was
+    with pytest.raises(TypeError):
+        b.state.se3 = (1, 2, 3)
+
+
 def test_a_view_keeps_its_owner_alive():
-    st = State(pos=(1, 2, 3))
-    v = st.pos
+    st = State(vel=(1, 2, 3))
+    v = st.vel
     del st
     gc.collect()
     v[0] = 4

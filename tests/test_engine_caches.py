@@ -38,17 +38,24 @@ def test_teleport_by_setter_is_seen_by_collider_and_loop():
     assert O.forces.f(0)[0] < 0  # pushed apart
 
 
-def test_teleport_through_a_vector_view_is_seen():
+def test_an_item_written_into_a_copy_of_pos_moves_nothing_as_in_the_reference():
     makeScene()
-    O.bodies[1].state.pos[0] = 0.019  # in place, through the view
+    O.bodies[1].state.pos[0] = 0.019  # State.pos is read as a copy there and here: the body stays
+    O.step()
+    assert not touching()
+
+
+def test_in_place_operator_on_pos_is_seen():
+    makeScene()
+    O.bodies[1].state.pos -= Vector3(0.051, 0, 0)  # (read, subtract, assign)
     O.step()
     assert touching()
 
 
-def test_in_place_operator_on_a_view_is_seen():
+def test_teleport_through_the_positions_array_is_seen():
+    import numpy as np
     makeScene()
-    p = O.bodies[1].state.pos
-    p -= Vector3(0.051, 0, 0)
+    np.asarray(O.bodies.arrays().pos)[1, 0] = 0.019  # in place, through a writable view of the column
     O.step()
     assert touching()
 

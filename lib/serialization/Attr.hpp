@@ -21,6 +21,7 @@ namespace Attr {
         positive = 1u << 3,    // value (or each component) must be > 0 and finite
         nonNegative = 1u << 4, // value must be >= 0 and finite
         finite = 1u << 5,      // value (or each component) must be finite
+        readCopy = 1u << 6,    // read from Python as a copy, not a view (the reference's properties, State.pos)
     };
 }
 

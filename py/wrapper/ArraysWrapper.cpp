@@ -17,13 +17,17 @@ Omega& omega();
 namespace {
 
 // Keeps what a view points into alive as long as the NumPy array lives; a writable view of the
-// positions also tells the engine that they may change behind its back (BodyStore::writableViews).
+// positions also tells the engine that they may change behind its back (BodyStore::writableViews),
+// and when it goes that they may have changed (a write through a temporary array, as
+// `numpy.asarray(O.bodies.arrays().pos)[1, 0] = x`, is over before the next step).
 struct ViewOwner {
     std::shared_ptr<Scene> scene; // (its ForceContainer holds the force and torque columns)
     std::shared_ptr<BodyStore> store;
     bool countsAsWriter = false;
     ~ViewOwner() {
-        if (countsAsWriter) --store->writableViews;
+        if (!countsAsWriter) return;
+        noteExternalWrite();
+        --store->writableViews;
     }
 };
 

@@ -58,7 +58,7 @@ static py::object copyOf(Serializable& s, const AttrInfo& a);
 
 py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
     void* p = a.address(s);
-    if (!owner.is_none() && isViewOfRecord(s)) return copyOf(s, a);
+    if (!owner.is_none() && ((a.flags & Attr::readCopy) || isViewOfRecord(s))) return copyOf(s, a);
     switch (a.kind) {
         case AttrKind::Bool: return py::cast(*static_cast<bool*>(p));
         case AttrKind::Int: return py::cast(*static_cast<int*>(p));

@@ -218,6 +218,21 @@ static void bindExtras(py::module_& m) {
                         st.setBlockedDOFs(dofs);
                     },
                     "Degrees of freedom the integrator does not change, as a string of 'xyzXYZ' (capitals: rotations)")
+            .def_property("se3",
+                    [](py::object self) { return py::make_tuple(self.attr("pos"), self.attr("ori")); },
+                    [](py::object self, py::object v) {
+                        if (!py::isinstance<py::sequence>(v) || py::len(v) != 2) throw py::type_error("State.se3: expected (pos, ori), a Vector3 and a Quaternion");
+                        py::sequence pair = v;
+                        py::object oldPos = self.attr("pos");
+                        self.attr("pos") = pair[0];
+                        try {
+                            self.attr("ori") = pair[1];
+                        } catch (...) {
+                            self.attr("pos") = oldPos; // (the state as it was)
+                            throw;
+                        }
+                    },
+                    "Position and orientation as one (pos, ori) pair (copies)")
             .def("displ", &State::displ, "Displacement from refPos")
             .def("rot", &State::rot, "Rotation from refOri (axis × angle)");
 
