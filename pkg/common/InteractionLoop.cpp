@@ -564,6 +564,19 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
 }
 
 void InteractionLoop::action() {
+    for (const auto& cb : callbacks)
+        if (!cb) throw std::invalid_argument("InteractionLoop.callbacks: None in the list");
+    for (const auto& cb : callbacks) cb->stepInit(*scene);
+    runLoop();
+    if (callbacks.empty()) return;
+    const InteractionContainer& intrs = scene->interactions;
+    for (size_t k = 0; k < intrs.size(); ++k) {
+        if (!intrs.isReal(k)) continue;
+        for (const auto& cb : callbacks) cb->go(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1], *intrs.phys(k));
+    }
+}
+
+void InteractionLoop::runLoop() {
     Scene& s = *scene;
     if (!geomDispatcher || !physDispatcher || !lawDispatcher) // (None assigned from Python or read from a file)
         throw std::invalid_argument("InteractionLoop: geomDispatcher, physDispatcher and lawDispatcher must not be None");

@@ -7,6 +7,7 @@
 #include <core/ForceContainer.hpp>
 #include <core/LawDispatcher.hpp>
 #include <lib/base/ChunkQueue.hpp>
+#include <pkg/common/IntrCallback.hpp>
 #include <array>
 #include <memory>
 #include <set>
@@ -24,6 +25,7 @@ public:
     std::shared_ptr<IGeomDispatcher> geomDispatcher = std::make_shared<IGeomDispatcher>();
     std::shared_ptr<IPhysDispatcher> physDispatcher = std::make_shared<IPhysDispatcher>();
     std::shared_ptr<LawDispatcher> lawDispatcher = std::make_shared<LawDispatcher>();
+    std::vector<std::shared_ptr<IntrCallback>> callbacks;
     bool fastPath = true;
     bool fusedPasses = true;
     long long pairsTested = 0;
@@ -32,6 +34,7 @@ public:
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
+        v.attr("callbacks", callbacks, "Interaction callbacks (IntrCallback): each is told when the loop starts a step, then called for every real interaction once the loop has processed them (SumIntrForcesCb)");
         v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack or Law2_ScGeom_MindlinPhys_Mindlin): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
         v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
@@ -41,6 +44,7 @@ public:
     void checkFunctorChain() const;
 
 private:
+    void runLoop(); // the step's work, without the callbacks
     std::set<std::pair<int, int>> warnedShapePairs;
     // Per step, contiguous, indexed by body id: sphere centers (shapePos) and radii (shapeRadius:
     // sphere > 0; facet: -1 - (index into facetPlanes); anything else NaN), and facet planes, so
