@@ -199,7 +199,7 @@ class Filler:
             return [[Vector3(a, 0, 0), Vector3(0, a + .1, 0), Vector3(0, 0, a + .2)]]
         if isinstance(val, list) and name == 'matches':  # MatchMaker: (id1, id2, value) triples
             return [[Vector3(k, k + 1, .25), Vector3(0, k, .5)]]
-        if isinstance(val, list) and name != 'functors':  # a list of ints (PartialEngine.ids)
+        if isinstance(val, list) and name not in ('functors', 'callbacks'):  # a list of ints (PartialEngine.ids)
             return [[k, k + 1, k + 5]]
         return []
 
@@ -207,7 +207,7 @@ class Filler:
         cls = type(obj).__name__
         for name, val in obj.dict().items():
             val = copied(val)  # math values are views of the attribute: keep the old value
-            if val is None or isinstance(val, Serializable) or name in ('functors', 'comb'):  # (lists of objects)
+            if val is None or isinstance(val, Serializable) or name in ('functors', 'comb', 'callbacks'):  # (lists of objects)
                 continue
             for cand in self.candidates(name, val):
                 try:
@@ -330,6 +330,7 @@ def build_zoo():
             e.geomDispatcher = dispatcher(yade.IGeomDispatcher)
             e.physDispatcher = dispatcher(yade.IPhysDispatcher)
             e.lawDispatcher = dispatcher(yade.LawDispatcher)
+            e.callbacks = [f.make(c) for c in subclasses_of(yade.IntrCallback, classes)]
         zoo.append(e)
     O.engines = zoo
     for i, e in enumerate(zoo):
