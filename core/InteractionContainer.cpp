@@ -351,6 +351,24 @@ bool InteractionContainer::erase(id_t a, id_t b) {
     return true;
 }
 
+bool InteractionContainer::makePotential(id_t a, id_t b) {
+    const long k = findIndex(a, b);
+    if (k < 0) return false;
+    if (!isReal((size_t)k)) return true;
+    removeContact((size_t)k); // (an object Python holds keeps the last values in its geom and phys)
+    if (Record* rec = record((size_t)k)) {
+        if (rec->object && rec->object.use_count() > 1) { // (Python holds it: it stays, without geom and phys)
+            rec->object->reset();
+            rec->geom.reset();
+            rec->phys.reset();
+        } else
+            freeRecord((size_t)k);
+    }
+    wasReal[k] = 0;
+    ++changes;
+    return true;
+}
+
 void InteractionContainer::eraseAt(size_t idx) {
     const id_t a = pairIds[2 * idx], b = pairIds[2 * idx + 1];
     removeContact(idx);

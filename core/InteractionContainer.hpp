@@ -31,6 +31,10 @@ public:
     bool insert(const Ptr& I); // false if the pair already exists
     bool insertPotential(id_t a, id_t b); // a pair without object (the collider); false if it exists
     bool erase(id_t a, id_t b);
+    // O.interactions.erase (the reference's): a real interaction becomes a potential pair (its geometry
+    // and physics dropped; the interaction loop tests it again at the next step); a potential pair
+    // stays as it is. False if there is no such pair. Not while the loop runs.
+    bool makePotential(id_t a, id_t b);
     void eraseAt(size_t k);
     // Room for n interactions in every column (a collider that knows how many pairs it will add:
     // growing the columns one push_back at a time held up to twice their size, and the old and

@@ -92,15 +92,42 @@ def test_contact_that_ends_and_starts_again_gives_the_same_forces_as_a_fresh_one
     assert i.iterMadeReal > 150
 
 
-def test_erased_potential_pair_is_gone_and_erase_of_a_missing_one_raises():
+def test_erase_makes_a_real_interaction_potential_as_the_reference():
+    # The reference's O.interactions.erase: a real interaction becomes a potential pair (geom and phys
+    # None), computed again at the next step; a potential pair, or no pair at all, is left as it is.
     three_spheres()
-    O.interactions.erase(2, 1)
-    assert not O.interactions.has(1, 2) and len(O.interactions) == 1
-    with pytest.raises(IndexError):
-        O.interactions.erase(1, 2)
-    with pytest.raises(IndexError):
-        O.interactions[1, 2]
-    assert O.interactions[0, 1].isReal  # the entry that moved into the hole is still found
+    held = O.interactions[0, 1]
+    O.interactions.erase(2, 1)  # potential: stays
+    O.interactions.erase(0, 2)  # no such pair: nothing happens (no error, as there)
+    assert len(O.interactions) == 2 and O.interactions.countReal() == 1
+    O.interactions.erase(1, 0)
+    assert len(O.interactions) == 2 and O.interactions.countReal() == 0
+    assert O.interactions.has(0, 1) and not O.interactions.has(0, 1, onlyReal=True)
+    i = O.interactions[0, 1]
+    assert not i.isReal and i.geom is None and i.phys is None
+    assert not held.isReal and held.geom is None
+    O.interactions.erase(0, 1)  # (again: a potential pair now, left as it is)
+    O.step()  # the bodies still touch: real again
+    assert O.interactions[0, 1].isReal and held.isReal and O.interactions.countReal() == 1
+
+
+def test_a_contact_erased_between_steps_pushes_again_with_the_references_figures():
+    # The reference (same script): 0.989370288900787 after 105 steps; with the pair dropped for good the
+    # sphere sank into the fixed one (0.98043).
+    O.bodies.append([sphere((0, 0, 0), 0.5, fixed=True), sphere((0, 0, 0.98), 0.5), sphere((0, 0, 3), 0.5), sphere((0, 0, 3.9), 0.5)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(gravity=(0, 0, -10), damping=0)]
+    O.dt = 1e-4
+    O.run(5, True)
+    O.interactions.erase(0, 1)
+    O.interactions.erase(2, 3)
+    assert (O.interactions.countReal(), len(O.interactions)) == (0, 2)
+    O.step()
+    assert (O.interactions.countReal(), len(O.interactions)) == (2, 2)
+    assert O.bodies[1].state.pos[2] == pytest.approx(0.980037994949027, rel=1e-13)
+    O.run(100, True)
+    assert O.bodies[1].state.pos[2] == pytest.approx(0.989370288900787, rel=1e-13)
 
 
 def test_erasing_a_body_drops_its_pairs_and_keeps_the_others_findable():
@@ -133,7 +160,7 @@ def test_iteration_skips_what_was_erased_meanwhile():
     O.step()
     it = iter(O.interactions)
     first = next(it)
-    O.interactions.erase(2, 3)
+    O.interactions.erase(2, 3)  # (no longer real: potential)
     rest = list(it)
     assert [(i.id1, i.id2) for i in [first] + rest] == [(0, 1), (1, 2)]
     it = iter(O.interactions)
@@ -144,7 +171,7 @@ def test_iteration_skips_what_was_erased_meanwhile():
 def test_a_held_interaction_that_was_erased_raises_instead_of_showing_stale_data():
     three_spheres()
     potential, contact = O.interactions[1, 2], O.interactions[0, 1]
-    O.interactions.erase(1, 2)
+    O.bodies.erase(2)  # (its pairs go)
     for attr in ('isReal', 'geom', 'phys', 'id1', 'iterMadeReal'):
         with pytest.raises(ReferenceError, match='erased'):
             getattr(potential, attr)

@@ -217,7 +217,7 @@ struct RealInteractionIterator {
         while (s.serial == serial && next < pairs.size()) {
             const long k = intrs.findIndex(pairs[next].first, pairs[next].second);
             ++next;
-            if (k < 0) continue; // (erased since the iteration began)
+            if (k < 0 || !intrs.isReal((size_t)k)) continue; // (erased, or made potential, since the iteration began)
             const bool had = intrs.object((size_t)k) != nullptr;
             std::shared_ptr<Interaction> I = intrs[(size_t)k];
             if (!had) made[1] = I;
@@ -286,9 +286,11 @@ struct InteractionContainerProxy {
         if (n < 0 || n >= (long)intrs.size()) throw py::index_error("O.interactions.nth(" + std::to_string(n) + "): there are " + std::to_string(intrs.size()) + " interactions");
         return py::cast(intrs[(size_t)n]);
     }
+    // As the reference: a real interaction becomes potential (the next step computes it again, and it is
+    // real again if the bodies still touch); a potential one stays; no such pair: nothing happens.
     void erase(int a, int b) {
         BetweenSteps between;
-        if (!scene().interactions.erase(a, b)) throw py::index_error("No such interaction: ##" + std::to_string(a) + "+" + std::to_string(b));
+        scene().interactions.makePotential(a, b);
     }
 };
 
@@ -575,7 +577,7 @@ void bindOmega(py::module_& m) {
                 BetweenSteps between;
                 return scene().interactions.countReal();
             })
-            .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"))
+            .def("erase", &InteractionContainerProxy::erase, py::arg("id1"), py::arg("id2"), "Make the real interaction of id1 and id2 a potential one (its geom and phys dropped; the next step computes it again, real again if the bodies still touch), as the reference does; a potential pair, or no pair, is left as it is")
             .def("clear", [](InteractionContainerProxy&) {
                 BetweenSteps between;
                 scene().interactions.clear();
