@@ -28,18 +28,30 @@ void ForceContainer::setRanges() {
     rangeStart[parts] = (int)n;
 }
 
-void ForceContainer::addPermForce(int id, const Vector3r& f) {
-    permForce[id] += f;
-    if (permInTotals) force[id] += f; // (this step's totals got the permanent forces already)
+void ForceContainer::setPermForce(int id, const Vector3r& f) {
+    if (permInTotals) force[id] += f - permForce[id]; // (this step's totals got the permanent forces already)
+    permForce[id] = f;
     anyPermanent = true;
     synced = clean = false;
 }
 
-void ForceContainer::addPermTorque(int id, const Vector3r& t) {
-    permTorque[id] += t;
-    if (permInTotals) torque[id] += t;
+void ForceContainer::setPermTorque(int id, const Vector3r& t) {
+    if (permInTotals) torque[id] += t - permTorque[id];
+    permTorque[id] = t;
     anyPermanent = true;
     synced = clean = false;
+}
+
+void ForceContainer::clearPermanent() {
+    sync(); // (what threads added stays in the totals)
+    for (size_t i = 0; i < permForce.size(); ++i) {
+        if (permInTotals) {
+            force[i] -= permForce[i];
+            torque[i] -= permTorque[i];
+        }
+        permForce[i] = permTorque[i] = Vector3r::Zero();
+    }
+    anyPermanent = permInTotals = false;
 }
 
 // in thread order, each list in the order added: the order of the contributions to a body

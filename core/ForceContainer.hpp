@@ -45,9 +45,10 @@ public:
     Vector3r* inPlaceForces() { return remote.size() == 1 && !remote[0].capture ? force.data() : nullptr; }
     Vector3r* inPlaceTorques() { return remote.size() == 1 && !remote[0].capture ? torque.data() : nullptr; }
     void markAdded() { markUnsynced(); }
-    // Forces that stay from step to step (set from Python with permanent=True).
-    void addPermForce(int id, const Vector3r& f);
-    void addPermTorque(int id, const Vector3r& t);
+    // Forces that stay from step to step (O.forces.setPermF / setPermT): each call replaces the body's.
+    void setPermForce(int id, const Vector3r& f);
+    void setPermTorque(int id, const Vector3r& t);
+    void clearPermanent(); // no permanent force or torque left (O.forces.reset(resetAll=True))
     const Vector3r& getForce(int id) { sync(); return force[id]; }
     const Vector3r& getTorque(int id) { sync(); return torque[id]; }
     const Vector3r& getPermForce(int id) const { return permForce[id]; }

@@ -416,8 +416,8 @@ std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
         const long id = std::stol(n.attr("id"));
         if (id < 0 || id >= (long)s->bodies.size()) throw FormatError("a permanent force refers to a body that does not exist");
         const auto x = numbers(n.text, 6, "permanent force");
-        s->forces.addPermForce((int)id, Vector3r(x[0], x[1], x[2]));
-        s->forces.addPermTorque((int)id, Vector3r(x[3], x[4], x[5]));
+        s->forces.setPermForce((int)id, Vector3r(x[0], x[1], x[2]));
+        s->forces.setPermTorque((int)id, Vector3r(x[3], x[4], x[5]));
     }
     return s;
 }

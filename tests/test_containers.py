@@ -625,3 +625,40 @@ def test_a_body_kept_from_before_reset_cannot_be_appended_again():
     with pytest.raises(IndexError):
         O.bodies.append(b)
     assert len(O.bodies) == 0
+
+
+def test_permanent_forces_api_as_the_reference():
+    # The reference on this script: addF(permanent=True) is deprecated and sets (a second call replaces the
+    # first: (2,0,0)); setPermF/setPermT replace; reset() (resetAll=True) drops the permanent ones too.
+    O.reset()
+    O.bodies.append([sphere((0, 0, 0), 0.5), sphere((3, 0, 0), 0.5)])
+    O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 1e-3
+    with pytest.warns(RuntimeWarning, match='setPermF'):
+        O.forces.addF(0, (1, 0, 0), permanent=True)
+        O.forces.addF(0, (2, 0, 0), permanent=True)
+    with pytest.warns(RuntimeWarning, match='setPermT'):
+        O.forces.addT(0, (0, 1, 0), permanent=True)
+    O.step()
+    assert tuple(O.forces.f(0)) == (2, 0, 0) and tuple(O.forces.permF(0)) == (2, 0, 0)
+    assert tuple(O.forces.t(0)) == (0, 1, 0) and tuple(O.forces.permT(0)) == (0, 1, 0)
+    O.forces.setPermF(0, (5, 0, 0))
+    O.forces.setPermT(1, (0, 0, 7))
+    O.step()
+    assert tuple(O.forces.f(0)) == (5, 0, 0) and tuple(O.forces.t(1)) == (0, 0, 7) and tuple(O.forces.m(0)) == (0, 1, 0)
+    assert O.forces.getPermForceUsed()
+    O.forces.setPermF(1, (0, 1, 0))  # between steps, after the totals got the permanent ones: the total follows
+    assert tuple(O.forces.f(1)) == (0, 1, 0)
+    O.forces.reset(resetAll=False)
+    assert tuple(O.forces.f(0)) == (5, 0, 0) and tuple(O.forces.permF(0)) == (5, 0, 0)
+    O.forces.reset()
+    assert tuple(O.forces.f(0)) == (0, 0, 0) and tuple(O.forces.permF(0)) == (0, 0, 0) and not O.forces.getPermForceUsed()
+    O.step()
+    assert tuple(O.forces.f(0)) == (0, 0, 0) and tuple(O.forces.t(1)) == (0, 0, 0)
+    O.forces.addF(1, (0, 3, 0))
+    assert tuple(O.forces.f(1)) == (0, 3, 0)
+    with pytest.raises(ValueError):
+        O.forces.setPermF(0, (float('nan'), 0, 0))
+    with pytest.raises(IndexError):
+        O.forces.setPermT(7, (0, 0, 1))
+    assert isinstance(O.forces.syncCount, int)

@@ -4,6 +4,7 @@
 #include <core/SceneIO.hpp>
 #include <pkg/common/InteractionLoop.hpp>
 #include <core/TimeStepper.hpp>
+#include <lib/base/Logging.hpp>
 #include <py/wrapper/Attributes.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pybind11/stl.h>
@@ -371,19 +372,47 @@ struct ForceContainerProxy {
     Vector3r f(long id, bool) { BetweenSteps between; checkBodyId(id); return scene().forces.getForce((int)id); }
     Vector3r t(long id, bool) { BetweenSteps between; checkBodyId(id); return scene().forces.getTorque((int)id); }
     void addF(long id, const Vector3r& v, bool permanent) {
+        if (permanent) { // (the reference's deprecated form: it sets the permanent force, as setPermF)
+            logWarning("O.forces.addF(...,permanent=True) is deprecated, use O.forces.setPermF(...) instead");
+            return setPermF(id, v);
+        }
         if (!isFinite(v)) throw py::value_error("O.forces.addF: force must be finite");
         BetweenSteps between;
         checkBodyId(id);
-        permanent ? scene().forces.addPermForce((int)id, v) : scene().forces.addForce((int)id, v);
+        scene().forces.addForce((int)id, v);
     }
     void addT(long id, const Vector3r& v, bool permanent) {
+        if (permanent) {
+            logWarning("O.forces.addT(...,permanent=True) is deprecated, use O.forces.setPermT(...) instead");
+            return setPermT(id, v);
+        }
         if (!isFinite(v)) throw py::value_error("O.forces.addT: torque must be finite");
         BetweenSteps between;
         checkBodyId(id);
-        permanent ? scene().forces.addPermTorque((int)id, v) : scene().forces.addTorque((int)id, v);
+        scene().forces.addTorque((int)id, v);
+    }
+    void setPermF(long id, const Vector3r& v) {
+        if (!isFinite(v)) throw py::value_error("O.forces.setPermF: force must be finite");
+        BetweenSteps between;
+        checkBodyId(id);
+        scene().forces.setPermForce((int)id, v);
+    }
+    void setPermT(long id, const Vector3r& v) {
+        if (!isFinite(v)) throw py::value_error("O.forces.setPermT: torque must be finite");
+        BetweenSteps between;
+        checkBodyId(id);
+        scene().forces.setPermTorque((int)id, v);
     }
     Vector3r permF(long id) { BetweenSteps between; checkBodyId(id); return scene().forces.getPermForce((int)id); }
     Vector3r permT(long id) { BetweenSteps between; checkBodyId(id); return scene().forces.getPermTorque((int)id); }
+    void reset(bool resetAll) {
+        BetweenSteps between;
+        ForceContainer& fc = scene().forces;
+        fc.resize(scene().bodies.size());
+        if (resetAll) fc.clearPermanent();
+        fc.reset();
+        fc.sync(); // (the totals then hold the permanent forces kept, as after a step's reset)
+    }
 };
 
 struct MaterialContainerProxy {
@@ -587,8 +616,17 @@ void bindOmega(py::module_& m) {
             .def("t", &ForceContainerProxy::t, py::arg("id"), py::arg("sync") = false, "Torque on body #id")
             .def("addF", &ForceContainerProxy::addF, py::arg("id"), py::arg("f"), py::arg("permanent") = false)
             .def("addT", &ForceContainerProxy::addT, py::arg("id"), py::arg("t"), py::arg("permanent") = false)
-            .def("permF", &ForceContainerProxy::permF, py::arg("id"))
-            .def("permT", &ForceContainerProxy::permT, py::arg("id"));
+            .def("permF", &ForceContainerProxy::permF, py::arg("id"), "Permanent force on body #id (setPermF)")
+            .def("permT", &ForceContainerProxy::permT, py::arg("id"), "Permanent torque on body #id (setPermT)")
+            .def("setPermF", &ForceContainerProxy::setPermF, py::arg("id"), py::arg("f"), "Set the permanent force on body #id: it acts at every step until changed (replaces the previous one)")
+            .def("setPermT", &ForceContainerProxy::setPermT, py::arg("id"), py::arg("t"), "Set the permanent torque on body #id: it acts at every step until changed (replaces the previous one)")
+            .def("m", &ForceContainerProxy::t, py::arg("id"), py::arg("sync") = false, "Deprecated alias of t (torque)")
+            .def("reset", &ForceContainerProxy::reset, py::arg("resetAll") = true,
+                    "Zero the forces and torques of the current step and, with resetAll (the default), the permanent ones; resetAll=False keeps the permanent ones")
+            .def("getPermForceUsed", [](ForceContainerProxy&) { BetweenSteps between; return scene().forces.hasPermanent(); },
+                    "Whether permanent forces or torques were set (since the last reset(resetAll=True))")
+            .def_property("syncCount", [](ForceContainerProxy&) { return scene().forces.syncCount; },
+                    [](ForceContainerProxy&, long long n) { scene().forces.syncCount = n; }, "Syncs of the per-thread contributions that had something to add (as O.forceSyncCount)");
     py::class_<MaterialContainerProxy>(m, "MaterialContainer", "O.materials: shared materials")
             .def("append", &MaterialContainerProxy::append)
             .def("__getitem__", &MaterialContainerProxy::get)
