@@ -370,24 +370,41 @@ def normalShearStressTensors(compressionPositive=False, splitNormalTensor=False,
     raise RuntimeError("Can't compute stress of periodic cell in aperiodic simulation.")
 
 
-def fabricTensor(cutoff=0.0, splitTensor=False, thresholdForce=float('nan')):
-    """Fabric tensor F = 1/N Σ_c n ⊗ n over the N real contacts (n: contact normal); returned as a
-    1-tuple (F,). splitTensor: (F_strong, F_weak) of the contacts whose normal force is above and
-    below thresholdForce (NaN: the mean normal force), both divided by the total N. cutoff is
-    accepted for compatibility; contacts of all bodies are counted."""
+def fabricTensor(cutoff=0.0, splitTensor=False, thresholdForce=float('nan'), extrema=[]):
+    """Fabric tensor F = 1/N Σ_c n ⊗ n over the N real contacts (n: contact normal), as a 1-tuple (F,).
+    cutoff in [0, 1): only the contacts whose contact point is in aabbExtrema(cutoff), the spheres' box
+    shrunk by that fraction on each side; extrema=(min, max): in that box instead. splitTensor:
+    (F_strong, F_weak), each over its own contacts: strong those whose signed normal force (negative
+    in compression) is below thresholdForce (NaN: the mean), as the reference. A part without contacts
+    is NaN there and here, with a RuntimeWarning."""
     np = _np()
     c = _contacts()
     nrm = np.asarray(c['normal'])
-    N = len(nrm)
-    if N == 0:
-        raise RuntimeError('fabricTensor: there are no real contacts')
-    nn = np.einsum('ci,cj->cij', nrm, nrm)
+    keep = np.ones(len(nrm), dtype=bool)
+    if len(extrema):
+        if len(extrema) != 2:
+            raise ValueError('fabricTensor: extrema must be two corners (min, max)')
+        lo, hi = (np.asarray(tuple(v), dtype=float) for v in extrema)
+    elif cutoff:
+        lo, hi = (np.asarray(tuple(v), dtype=float) for v in aabbExtrema(cutoff))
+    if len(extrema) or cutoff:
+        cp = np.asarray(c['contactPoint']).reshape(-1, 3)
+        keep = np.all((cp >= lo) & (cp <= hi), axis=1)
+    nn = np.einsum('ci,cj->cij', nrm, nrm)[keep]
+
+    def mean(part, what):
+        if len(part) == 0:
+            import warnings
+            warnings.warn('fabricTensor: no contacts %s: a NaN tensor (as the reference)' % what, RuntimeWarning, stacklevel=3)
+            return Matrix3(*[float('nan')] * 9)
+        return _matrix(part.sum(axis=0) / len(part))
+
     if not splitTensor:
-        return (_matrix(nn.sum(axis=0) / N),)
-    fn = np.linalg.norm(np.asarray(c['normalForce']), axis=1)
-    t = fn.mean() if math.isnan(thresholdForce) else thresholdForce
-    strong = fn > t
-    return (_matrix(nn[strong].sum(axis=0) / N), _matrix(nn[~strong].sum(axis=0) / N))
+        return (mean(nn, 'considered'),)
+    f = -np.einsum('ci,ci->c', np.asarray(c['normalForce']), nrm)[keep]  # (compression negative)
+    t = f.mean() if math.isnan(thresholdForce) else thresholdForce
+    strong = f < t
+    return (mean(nn[strong], 'in the strong part'), mean(nn[~strong], 'in the weak part'))
 
 
 def momentum():
@@ -411,16 +428,16 @@ def angularMomentum(origin=Vector3.Zero):
 
 def maxOverlapRatio():
     """Largest overlap of two spheres in contact relative to their harmonic mean radius:
-    max δ/r*, r* = 2 r1 r2/(r1 + r2) (0 without sphere-sphere contacts)."""
+    max δ/r*, r* = 2 r1 r2/(r1 + r2) (-1 without sphere-sphere contacts, as the reference)."""
     np = _np()
     c = _contacts()
     r = np.asarray(O.bodies.arrays().radius)
     if len(c['id1']) == 0:
-        return 0.0
+        return -1.0
     r1, r2 = r[c['id1']], r[c['id2']]
     both = ~np.isnan(r1) & ~np.isnan(r2)
     if not both.any():
-        return 0.0
+        return -1.0
     rHarmonic = 2 * r1[both] * r2[both] / (r1[both] + r2[both])
     return float((np.asarray(c['penetrationDepth'])[both] / rHarmonic).max())
 
