@@ -14,6 +14,8 @@ public:
     id_t id = -1;
     int mask = 1; // bodies collide only when (mask1 & mask2) != 0
     int clumpId = -1;
+    long long iterBorn = -1; // the step (O.iter) and time (O.time) at which it was appended
+    Real timeBorn = -1;
     std::shared_ptr<Shape> shape;
     std::shared_ptr<Material> material;
     std::shared_ptr<State> state = std::make_shared<State>();
@@ -23,6 +25,8 @@ public:
         v.attr("id", id, "Index in O.bodies (-1 while not appended)", Attr::readonly);
         v.attr("mask", mask, "Collision mask: two bodies may interact only if (mask1 & mask2) != 0");
         v.attr("clumpId", clumpId, "Id of the clump this body belongs to (-1: none)", Attr::readonly);
+        v.attr("iterBorn", iterBorn, "Step number (O.iter) at which the body was appended to O.bodies (-1: not yet)");
+        v.attr("timeBorn", timeBorn, "Time (O.time) at which the body was appended to O.bodies (-1: not yet)");
         v.attr("shape", shape, "Geometry of the particle");
         v.attr("material", material, "Material (may be shared with other bodies)");
         v.attr("state", state, "Physical state (position, velocity...)");

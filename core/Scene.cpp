@@ -3,8 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <algorithm>
+#include <pwd.h>
 #include <random>
 #include <stdexcept>
+#include <unistd.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -31,6 +34,20 @@ bool Scene::timingEnabled = false;
 
 static std::atomic<long long> sceneCount{0};
 
+// "Full Name (user@host)" with the spaces as '~', as the reference's O.tags['author'] ("root~(root@vm)").
+static std::string authorTag() {
+    std::string user = "unknown", name;
+    if (const passwd* pw = getpwuid(getuid())) {
+        user = pw->pw_name;
+        name = pw->pw_gecos ? std::string(pw->pw_gecos).substr(0, std::string(pw->pw_gecos).find(',')) : "";
+    }
+    char host[256] = "";
+    if (gethostname(host, sizeof host - 1) != 0) host[0] = 0;
+    std::string tag = (name.empty() ? user : name) + " (" + user + "@" + host + ")";
+    std::replace(tag.begin(), tag.end(), ' ', '~');
+    return tag;
+}
+
 Scene::Scene() : serial(++sceneCount) {
     // id: unique per run (time, pid-like random suffix); d.id adds a description later.
     std::random_device rd;
@@ -41,6 +58,7 @@ Scene::Scene() : serial(++sceneCount) {
     tags["id.d"] = tags["id"];
     tags["description"] = "";
     tags["isoTime"] = nowString("%Y%m%dT%H%M%S");
+    tags["author"] = authorTag();
 #ifdef _OPENMP
     setThreads(omp_get_max_threads());
 #endif
@@ -154,6 +172,8 @@ void Scene::moveToNextSubStep() {
 
 Body::id_t Scene::appendBody(const std::shared_ptr<Body>& b) {
     const Body::id_t id = bodies.insert(b);
+    b->iterBorn = iter;
+    b->timeBorn = time;
     forces.resize(bodies.size());
     interactions.resizeBodies(bodies.size());
     return id;

@@ -52,14 +52,20 @@ Real Shop::unbalancedForce(Scene& scene, bool useMaxForce) {
     return (useMaxForce ? maxF : sumF / nBodies) / meanContact;
 }
 
-Real Shop::kineticEnergy(const Scene& scene) {
-    Real e = 0;
+Real Shop::kineticEnergy(const Scene& scene, long* maxId) {
+    Real e = 0, largest = -1;
+    if (maxId) *maxId = -1;
     for (const auto& b : scene.bodies) {
         if (!b || !b->isDynamic()) continue;
         const State& s = *b->state;
         const Matrix3r R = s.ori().toRotationMatrix();
         const Matrix3r I = R * s.inertia().asDiagonal() * R.transpose(); // inertia in the global frame
-        e += 0.5 * s.mass() * s.vel().squaredNorm() + 0.5 * s.angVel().dot(I * s.angVel());
+        const Real eb = 0.5 * s.mass() * s.vel().squaredNorm() + 0.5 * s.angVel().dot(I * s.angVel());
+        e += eb;
+        if (maxId && eb > largest) {
+            largest = eb;
+            *maxId = b->id;
+        }
     }
     return e;
 }

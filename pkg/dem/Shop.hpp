@@ -10,7 +10,8 @@ namespace Shop {
     // included, divided by the mean contact force; tends to 0 at static equilibrium.
     Real unbalancedForce(Scene& scene, bool useMaxForce);
     // Sum of ½mv² + ½ω·Iω over dynamic bodies.
-    Real kineticEnergy(const Scene& scene);
+    // maxId (if given): the id of the body with the largest kinetic energy (-1: none)
+    Real kineticEnergy(const Scene& scene, long* maxId = nullptr);
     // Box around all spheres (surfaces, or centers only).
     std::pair<Vector3r, Vector3r> aabbExtremaOfSpheres(const Scene& scene, bool centers);
     // Total volume of the spheres whose mask shares a bit with `mask` (0 or -1: all).

@@ -246,10 +246,16 @@ static void bindExtras(py::module_& m) {
                         b.setDynamic(d);
                     },
                     "Whether forces move this body; False blocks all its degrees of freedom (State.blockedDOFs='xyzXYZ') and it keeps its prescribed velocity")
-            .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; });
+            .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; })
+            .def_property_readonly("isClump", [](Body& b) { return b.clumpId >= 0 && b.clumpId == b.id; }, "Whether this body is a clump (no clumps yet: False)")
+            .def_property_readonly("isClumpMember", [](Body& b) { return b.clumpId >= 0 && b.clumpId != b.id; }, "Whether this body is a member of a clump")
+            .def_property("groupMask", [](py::object self) { return self.attr("mask"); },
+                    [](py::object self, py::object v) { self.attr("mask") = v; }, "Old name of mask");
 
     existing<Interaction, Serializable>()
-            .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)");
+            .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)")
+            .def_property_readonly("isActive", [](Interaction&) { return true; },
+                    "Whether the interaction's forces count (always True here: deactivating an interaction is not supported; O.interactions.erase makes a contact potential)");
     guardErasedInteractions(m);
 
     ctorArgHandlers()["BoundDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<BoundDispatcher&>(s), a, "BoundDispatcher"); };

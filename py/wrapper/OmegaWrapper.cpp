@@ -38,18 +38,19 @@ py::list bodyInteractions(const Body& b) {
     return r;
 }
 
-static void collectLabels(const std::shared_ptr<Serializable>& obj, std::set<Serializable*>& seen, py::module_& builtins) {
+// (a label given twice names the first object with it, as in the reference)
+static void collectLabels(const std::shared_ptr<Serializable>& obj, std::set<Serializable*>& seen, std::set<std::string>& named, py::module_& builtins) {
     if (!obj || !seen.insert(obj.get()).second) return;
     std::string label;
     if (auto* e = dynamic_cast<Engine*>(obj.get())) label = e->label;
     else if (auto* f = dynamic_cast<Functor*>(obj.get())) label = f->label;
     else return; // only engines and functors (and what they hold) carry labels
-    if (!label.empty()) builtins.attr(label.c_str()) = py::cast(obj);
+    if (!label.empty() && named.insert(label).second) builtins.attr(label.c_str()) = py::cast(obj);
     for (const AttrInfo& a : classInfoOf(*obj).attrs) {
         void* p = a.address(*obj);
-        if (a.kind == AttrKind::Ptr) collectLabels(a.getPtr(p), seen, builtins);
+        if (a.kind == AttrKind::Ptr) collectLabels(a.getPtr(p), seen, named, builtins);
         else if (a.kind == AttrKind::PtrVector)
-            for (const auto& child : a.getPtrVector(p)) collectLabels(child, seen, builtins);
+            for (const auto& child : a.getPtrVector(p)) collectLabels(child, seen, named, builtins);
     }
 }
 
@@ -76,7 +77,8 @@ static std::shared_ptr<Serializable> findLabeled(const std::shared_ptr<Serializa
 void injectLabels(const std::vector<std::shared_ptr<Engine>>& engines) {
     py::module_ builtins = py::module_::import("builtins");
     std::set<Serializable*> seen;
-    for (const auto& e : engines) collectLabels(e, seen, builtins);
+    std::set<std::string> named;
+    for (const auto& e : engines) collectLabels(e, seen, named, builtins);
 }
 
 namespace {
@@ -155,6 +157,8 @@ struct BodyContainerProxy {
         if (!b) throw py::type_error("O.bodies.insertAtId: the body is None");
         if (id < 0 || id > std::numeric_limits<Body::id_t>::max()) throw py::index_error("O.bodies.insertAtId: invalid id " + std::to_string(id));
         s.bodies.insertAtId(b, (Body::id_t)id);
+        b->iterBorn = s.iter;
+        b->timeBorn = s.time;
         s.forces.resize(s.bodies.size());
         s.interactions.resizeBodies(s.bodies.size());
         return id;
@@ -172,7 +176,7 @@ struct BodyContainerProxy {
             if (b) l.append(py::cast(b));
         return py::iter(l);
     }
-    bool erase(long id) {
+    bool erase(long id, bool /*eraseClumpMembers: there are no clumps yet, so no members to erase with it*/) {
         BetweenSteps between;
         Scene& s = scene();
         if (id < 0 || id >= (long)s.bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
@@ -574,7 +578,8 @@ void bindOmega(py::module_& m) {
             .def("__getitem__", &BodyContainerProxy::get)
             .def("__len__", &BodyContainerProxy::len)
             .def("__iter__", &BodyContainerProxy::iter)
-            .def("erase", &BodyContainerProxy::erase, py::arg("id"), "Remove a body and its interactions")
+            .def("erase", &BodyContainerProxy::erase, py::arg("id"), py::arg("eraseClumpMembers") = false,
+                    "Remove a body and its interactions; True if it existed (eraseClumpMembers: for a clump, its members too; there are no clumps yet)")
             .def("replace", &BodyContainerProxy::replace, py::arg("bodies"),
                     "Remove all bodies and interactions, then append the bodies of the list (ids from 0); returns their ids")
             .def("insertAtId", &BodyContainerProxy::insertAtId, py::arg("body"), py::arg("insertatid"),

@@ -15,7 +15,13 @@ void bindShop(py::module_& m) {
     m.def("unbalancedForce", [](bool useMaxForce) { return Shop::unbalancedForce(omega().scene(), useMaxForce); },
             py::arg("useMaxForce") = false,
             "Mean (or maximum) resultant force on dynamic bodies (with NewtonIntegrator's gravity) over the mean contact force");
-    m.def("kineticEnergy", [] { return Shop::kineticEnergy(omega().scene()); }, "Translational and rotational kinetic energy of dynamic bodies");
+    m.def("kineticEnergy", [](bool findMaxId) -> pybind11::object {
+        if (!findMaxId) return pybind11::cast(Shop::kineticEnergy(omega().scene()));
+        long maxId;
+        const Real e = Shop::kineticEnergy(omega().scene(), &maxId);
+        return pybind11::make_tuple(e, maxId);
+    }, pybind11::arg("findMaxId") = false,
+            "Translational and rotational kinetic energy of dynamic bodies; with findMaxId, (energy, id of the body with the largest)");
     m.def("aabbExtremaOfSpheres", [](bool centers) { return Shop::aabbExtremaOfSpheres(omega().scene(), centers); },
             py::arg("centers") = false, "(min, max) corners of the box around all spheres");
     m.def("getSpheresVolume", [](int mask) { return Shop::spheresVolume(omega().scene(), mask); }, py::arg("mask") = -1,
