@@ -64,3 +64,16 @@ def test_author_tag():
     import socket
     author = O.tags['author']
     assert '~' not in getpass.getuser() and author.endswith('(%s@%s)' % (getpass.getuser(), socket.gethostname())) and ' ' not in author
+
+
+def test_regular_ortho_counts_equal_the_references():
+    from yade import pack
+    box = pack.inAlignedBox((-1, -2, -3), (1, 2, 3)) - pack.inCylinder((0, 0, -3), (0, 0, 3), 0.2)
+    cases = [(pack.inAlignedBox((0, 0, 0), (1, 1, 1)), 0.1, 0, 64), (pack.inAlignedBox((0, 0, 0), (1.05, 1, 1)), 0.1, 0, 80),
+             (pack.inCylinder((0, 0, 0), (0, 0, 1), 0.5), 0.1, 0, 44), (pack.inSphere((0, 0, 0), 0.5), 0.1, 0, 30),
+             (pack.inAlignedBox((0, 0, 0), (1, 1, 1)), 0.1, 0.01, 64), (box, 0.2, 0, 476), (box, 0.15, 0, 1425), (box, 0.25, 0, 187),
+             (pack.inSphere((1, 2, 3), 1.3), 0.07, 0.003, 2650)]
+    for predicate, r, gap, n in cases:
+        assert len(pack.regularOrtho(predicate, radius=r, gap=gap)) == n
+    xs = sorted({round(b.state.pos[0], 12) for b in pack.regularOrtho(pack.inAlignedBox((0, 0, 0), (1, 1, 1)), radius=0.1, gap=0)})
+    assert xs == [0.1, 0.3, 0.5, 0.7]

@@ -69,10 +69,12 @@ def _latticeBox(predicate, radius, gap, who):
 def regularOrtho(predicate, radius, gap, **kw):
     """Spheres of the given radius on a cubic lattice of spacing 2*radius+gap, from the corner of the
     predicate's box, those inside the predicate (at least radius from its boundary); returns the
-    list of bodies made by utils.sphere(center, radius, **kw)."""
+    list of bodies made by utils.sphere(center, radius, **kw). Along each axis the centres are
+    lo+r, lo+r+a... strictly below hi-r (a = 2r+gap), as the reference's: a sphere that would touch
+    the box's upper face exactly is not made (box (0,0,0)-(1,1,1), r = 0.1: 64 spheres there and here)."""
     lo, hi, r, gap = _latticeBox(predicate, radius, gap, 'regularOrtho')
     a = 2 * r + gap
-    n = [int(math.ceil((h - l) / a)) + 1 for l, h in zip(lo, hi)]
+    n = [max(0, int(math.ceil(((h - r) - (l + r)) / a))) for l, h in zip(lo, hi)]
     centers = [c for i in range(n[0]) for j in range(n[1]) for k in range(n[2])
                for c in (Vector3(lo[0] + r + i * a, lo[1] + r + j * a, lo[2] + r + k * a),) if predicate(c, r)]
     return [utils.sphere(c, r, **kw) for c in centers]
