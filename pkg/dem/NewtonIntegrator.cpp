@@ -236,6 +236,8 @@ void NewtonIntegrator::action() {
             Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
             Quaternionr newOri; // (an aspherical body's, when turned)
             bool turned = false;
+            Vector3r* angMom = nullptr; // (an aspherical body's State.angMom, and its new value)
+            Vector3r newAngMom = Vector3r::Zero();
             if (dynamic) {
                 const bool damped = lambda != 0 && h.isDamped[id];
                 Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
@@ -244,14 +246,25 @@ void NewtonIntegrator::action() {
                 const Vector3r undamped = accel;
                 if (damped) damp(accel, vel, dt, lambda);
                 if (!gravityDamped) accel += gFree;
+                // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2), the
+                // state being the angular momentum State.angMom (global frame), as in the reference: the spin is
+                // found from it (a spin set alone is overwritten), and it is kept up to date after the turn
+                const bool asphericalBody = __builtin_expect(unequalMoments(inertia), 0) && aspherical
+                        && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ)) && (inertia.array() > 0).all();
+                if (__builtin_expect(asphericalBody, 0)) {
+                    angMom = &s.bodies[id]->state->angMom;
+                    const Quaternionr& q = h.ori[id];
+                    angVel = q * (q.conjugate() * *angMom).cwiseQuotient(inertia);
+                }
                 // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
                 const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
-                // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2)
-                if (__builtin_expect(unequalMoments(inertia), 0) && aspherical && !still && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ))
-                        && (inertia.array() > 0).all()) {
+                if (asphericalBody && !still) {
                     const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
                     newOri = t.ori;
                     turned = true;
+                    // the momentum of the new (mid-step) spin at the new orientation: the next step finds that spin
+                    // from it again (so a run goes as when the spin itself was the state: second order in dt)
+                    newAngMom = t.ori * inertia.cwiseProduct(t.ori.conjugate() * t.angVel);
                     if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
                     if (energy) {
                         const Vector3r v = vel + 0.5 * dt * accel;
@@ -297,6 +310,7 @@ void NewtonIntegrator::action() {
             }
             h.vel[id] = vel;
             h.angVel[id] = angVel;
+            if (angMom) *angMom = newAngMom; // (zero for a still body)
             statePos = pos;
             mir[id] = pos;
             if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
