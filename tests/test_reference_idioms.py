@@ -77,3 +77,21 @@ def test_regular_ortho_counts_equal_the_references():
         assert len(pack.regularOrtho(predicate, radius=r, gap=gap)) == n
     xs = sorted({round(b.state.pos[0], 12) for b in pack.regularOrtho(pack.inAlignedBox((0, 0, 0), (1, 1, 1)), radius=0.1, gap=0)})
     assert xs == [0.1, 0.3, 0.5, 0.7]
+
+
+def test_a_relative_verlet_distance_reads_as_the_distance_after_the_first_step():
+    # the reference on this script: -0.5, then 0.15 (0.5 x the smallest radius), 0.15, and -0.2 kept
+    O.reset()
+    O.bodies.append([utils.sphere((0, 0, 0), 0.5), utils.sphere((0, 0, 3), 0.3)])
+    c = InsertionSortCollider([Bo1_Sphere_Aabb()])
+    assert c.verletDist == -0.5
+    O.engines = [ForceResetter(), c, NewtonIntegrator()]
+    O.dt = 1e-4
+    O.step()
+    assert c.verletDist == pytest.approx(0.15, rel=1e-15)
+    O.bodies.append(utils.sphere((5, 5, 5), 0.1))
+    O.step()
+    assert c.verletDist == pytest.approx(0.15, rel=1e-15)
+    c.verletDist = -0.2
+    O.step()
+    assert c.verletDist == -0.2

@@ -51,6 +51,9 @@ void InsertionSortCollider::updateBounds() {
     travelled = 0; // the bounds start from the positions now, those of the last step's integrator if current
     travelledTo = scene->positionsCurrent() ? scene->positionMirror.iter : scene->iter - 1;
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
+    // the first rebuild turns a relative verletDist into the distance it gave, as the reference does (-0.5 with
+    // a smallest radius of 0.3 reads 0.15 after the first step); a relative value set later stays relative
+    if (verletDist < 0 && numReinit == 0 && std::isfinite(minRadius)) verletDist = sweep;
     boundDispatcher->scene = scene;
     boundDispatcher->prepareTable(); // the loop below only reads the table
     for (const auto& f : boundDispatcher->functors)

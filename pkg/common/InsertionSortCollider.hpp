@@ -13,7 +13,7 @@ public:
     template <class V> void visit(V& v) {
         Collider::visit(v);
         v.attr("verletDist", verletDist,
-                "Enlargement of the bounds (the Verlet distance ΔL of 3.1.3); negative: that fraction of the smallest sphere radius",
+                "Enlargement of the bounds (the Verlet distance ΔL of 3.1.3); negative: that fraction of the smallest sphere radius (replaced by that distance at the first run, as in the reference)",
                 Attr::finite);
         v.attr("numAction", numAction, "How many times the collider has run (not counting skipped steps)", Attr::readonly | Attr::noSave);
         v.attr("numReinit", numReinit, "How many times the sorted lists were rebuilt from scratch", Attr::readonly | Attr::noSave);
