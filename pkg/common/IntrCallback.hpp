@@ -4,6 +4,7 @@
 #include <core/IPhys.hpp>
 #include <core/Interaction.hpp>
 #include <lib/factory/ClassRegistry.hpp>
+#include <stdexcept>
 
 namespace yade {
 
