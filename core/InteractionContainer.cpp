@@ -158,6 +158,10 @@ void InteractionContainer::endContact(size_t k) {
         contactOf[k] = noContact;
         pool(c).markEnded(slotOf(c));
     }
+    dropObjects(k);
+}
+
+void InteractionContainer::dropObjects(size_t k) {
     Record* rec = record(k);
     if (!rec) return;
     if (rec->object && rec->object.use_count() > 1) { // (Python holds it: it stays, reset)
@@ -356,14 +360,7 @@ bool InteractionContainer::makePotential(id_t a, id_t b) {
     if (k < 0) return false;
     if (!isReal((size_t)k)) return true;
     removeContact((size_t)k); // (an object Python holds keeps the last values in its geom and phys)
-    if (Record* rec = record((size_t)k)) {
-        if (rec->object && rec->object.use_count() > 1) { // (Python holds it: it stays, without geom and phys)
-            rec->object->reset();
-            rec->geom.reset();
-            rec->phys.reset();
-        } else
-            freeRecord((size_t)k);
-    }
+    dropObjects((size_t)k);
     wasReal[k] = 0;
     ++changes;
     return true;

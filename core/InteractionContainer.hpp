@@ -163,6 +163,7 @@ private:
     }
     ContactPool& poolFor(const IGeom& g, const IPhys& p, uint32_t& index); // made if new (thread-safe)
     void removeContact(size_t k);   // its record leaves the pool now (not while the loop runs)
+    void dropObjects(size_t k);     // a pair back to potential: an object Python holds is reset, else its record freed
     void moved(ContactPool& pool, uint32_t index, size_t slot); // a record moved to `slot`: relink
     // The views of a contact's record (the geom and phys of its object) are kept in its Record
     // (geom, phys), so that they can be pointed at the record when it moves and detached when it
