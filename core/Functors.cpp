@@ -59,10 +59,6 @@ void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* resul
     }
 }
 
-void IGeomFunctor::goBatchWithLaw(const BodyColumns&, Contact*, size_t, LawFunctor& law, char*) {
-    throw std::logic_error(getClassName() + " has no fused pass with " + law.getClassName());
-}
-
 void LawFunctor::goBatch(const Contact* c, size_t n, char* keep) {
     for (size_t j = 0; j < n; ++j) {
         StandIn s(c[j]);

@@ -33,14 +33,6 @@ public:
     // contact (an adapter for functors written in the one-contact form); the library's functors
     // derive from IGeomFunctorBatched.
     virtual void goBatch(const BodyColumns& bodies, Contact* c, size_t n, char* result);
-    // A fused pass for one Law2 functor this Ig2 functor knows: for existing contacts c[0] ..
-    // c[n-1] (real, of this functor's shape types in its order, whose Law2 functor is `law`),
-    // the geometry then the forces, contact by contact, with the very results of goBatch()
-    // followed by law.goBatch() (the same arithmetic; the interaction loop only skips its
-    // bookkeeping between the two). keep[j] is the law's answer. Only for a law that
-    // fusesWith() accepted.
-    virtual bool fusesWith(const LawFunctor&) const { return false; }
-    virtual void goBatchWithLaw(const BodyColumns& bodies, Contact* c, size_t n, LawFunctor& law, char* keep);
 };
 
 // A library Ig2 functor: Derived has a non-virtual

@@ -9,7 +9,10 @@ void registerAllClasses() {
     if (done) return;
     done = true;
     ClassRegistry& registry = ClassRegistry::instance();
-#define YADE_CLASS(Class, Base) registry.add<Class, Base>(#Class);
+// (a Law2 functor written as a kernel also gets its fast passes: core/ContactKernel.hpp)
+#define YADE_CLASS(Class, Base)           \
+    registry.add<Class, Base>(#Class); \
+    registerKernelPassesOf<Class>();
 #include <core/classes.def>
 #include <pkg/common/classes.def>
 #include <pkg/dem/classes.def>

@@ -406,18 +406,18 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         // start now, all at once, instead of one contact after the other
         prefetchObject(geom);
         prefetchObject(phys);
-        // an existing contact whose Ig2 and Law2 functors have a fused pass: both run in step 4
+        // an existing contact whose Ig2 and Law2 functors have a fast pass: both run in step 4
         IGeomFunctor* fused = nullptr;
-        if (law && geom && phys) {
-            if (sc.fuseGeom != geomEntry.functor || sc.fuseLaw != law) {
-                sc.fuseGeom = geomEntry.functor;
-                sc.fuseLaw = law;
-                sc.fuses = fuse && geomEntry.functor->fusesWith(*law);
+        if (fuse && law && geom && phys) {
+            if (sc.passGeom != geomEntry.functor || sc.passLaw != law) {
+                sc.passGeom = geomEntry.functor;
+                sc.passLaw = law;
+                sc.pass = KernelPasses::find(*geomEntry.functor, *law);
             }
-            if (sc.fuses) fused = geomEntry.functor;
+            if (sc.pass) fused = geomEntry.functor;
         }
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
-        entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, 0};
+        entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         if (!fused) { // (may get a new geometry)
             contacts[n].made = made + n;
@@ -547,7 +547,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         size_t last = first;
         while (last < live && entries[last].law == f && entries[last].fused == fused) ++last;
         try {
-            if (fused) fused->goBatchWithLaw(columns, contacts + first, last - first, *f, flags);
+            if (fused) entries[first].pass(*fused, *f, columns, contacts + first, last - first, flags);
             else f->goBatch(contacts + first, last - first, flags);
         } catch (const std::exception& e) { // (not out of the parallel region: reported after it; the contacts stay)
             std::fill(flags, flags + (last - first), 1);

@@ -1,6 +1,7 @@
 // Runs the three dispatchers over every interaction (1.2.1): Ig2 (geometry), Ip2 (physics of a
 // new contact) and Law2 (forces). The Ig2 → Law2 and Ip2 → Law2 type chains are checked.
 #pragma once
+#include <core/ContactKernel.hpp>
 #include <core/IGeomDispatcher.hpp>
 #include <core/IPhysDispatcher.hpp>
 #include <core/EnergyTracker.hpp>
@@ -35,7 +36,7 @@ public:
         v.attr("physDispatcher", physDispatcher, "Ip2 functors: contact physics from two materials");
         v.attr("lawDispatcher", lawDispatcher, "Law2 functors: forces from geometry and physics");
         v.attr("callbacks", callbacks, "Interaction callbacks (IntrCallback): each is told when the loop starts a step, then called for every real interaction once the loop has processed them (SumIntrForcesCb)");
-        v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of an existing contact in one pass where the Ig2 functor has one for its Law2 functor (Ig2_Sphere_Sphere_ScGeom with Law2_ScGeom_FrictPhys_CundallStrack or Law2_ScGeom_MindlinPhys_Mindlin): the same results, less bookkeeping");
+        v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of existing contacts in one pass, two contacts at a time, where both functors are kernels (Ig2_Sphere_Sphere_ScGeom or Ig2_Facet_Sphere_ScGeom with any Law2 functor on ScGeom written as a kernel: doc/contact-laws.md): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
         v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
     }
@@ -164,7 +165,8 @@ private:
             long k;             // position in O.interactions
             IGeomFunctor* geom; // its Ig2 functor (null once computed)
             LawFunctor* law;    // its Law2 functor
-            IGeomFunctor* fused; // an existing contact whose Ig2 functor runs with its Law2 functor in one pass (else null)
+            IGeomFunctor* fused; // an existing contact whose Ig2 and Law2 functors have a fast pass (else null)
+            KernelPasses::Pass pass; // (then that pass)
             char real;          // the Ig2 functor's answer
         };
         std::vector<Entry> entries;
@@ -174,10 +176,10 @@ private:
         std::vector<size_t> where;
         std::vector<char> flags;
         bool oneGeomFunctor = true; // every entry has the same Ig2 functor (and none is fused)
-        // whether an Ig2 functor fuses with a Law2 functor (IGeomFunctor::fusesWith), for the last pair asked
-        const IGeomFunctor* fuseGeom = nullptr;
-        const LawFunctor* fuseLaw = nullptr;
-        bool fuses = false;
+        // the fast pass of an Ig2 functor with a Law2 functor (KernelPasses::find), for the last pair asked
+        const IGeomFunctor* passGeom = nullptr;
+        const LawFunctor* passLaw = nullptr;
+        KernelPasses::Pass pass = nullptr;
         Interaction standIn; // what the Ip2 functors get for a pair without object
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]

@@ -1,4 +1,3 @@
-#include <core/Scene.hpp>
 #include <pkg/dem/Ig2_Sphere_Sphere_ScGeom.hpp>
 
 namespace yade {
@@ -19,21 +18,13 @@ void Ig2_Sphere_Sphere_ScGeom::goBatch(const BodyColumns& b, Contact* c, size_t 
 
 bool Ig2_Sphere_Sphere_ScGeom::go(Real r1, Real r2, const Kinematics& st1, const Kinematics& st2, const Vector3r& shift2, bool force,
         Contact& contact) {
-    Vector3r normal = (st2.pos + shift2) - st1.pos;
-    const Real sumR = r1 + r2;
     if (!contact.isReal() && !force) { // a potential contact: is it one yet?
-        const Real reach = interactionDetectionFactor * sumR;
-        if (normal.squaredNorm() > reach * reach) return false;
+        const Real reach = interactionDetectionFactor * (r1 + r2);
+        if (((st2.pos + shift2) - st1.pos).squaredNorm() > reach * reach) return false;
     }
     const bool isNew = !contact.geom;
     ScGeom& g = isNew ? contact.makeGeom<ScGeom>() : static_cast<ScGeom&>(*contact.geom);
-    const Real dist = normal.norm();
-    normal /= dist;
-    g.penetrationDepth = sumR - dist;
-    g.contactPoint = st1.pos + (r1 - 0.5 * g.penetrationDepth) * normal;
-    g.refR1 = r1;
-    g.refR2 = r2;
-    g.precompute(st1, st2, scene->dt, normal, isNew, shift2, true);
+    kernel<Real>(r1, r2, motionOf(st1, st2), vec3(shift2), vec3(g.normal), isNew, scene->dt).store(g);
     return true;
 }
 

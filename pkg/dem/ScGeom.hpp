@@ -3,6 +3,7 @@
 #pragma once
 #include <core/IGeom.hpp>
 #include <core/State.hpp>
+#include <lib/base/Lanes.hpp>
 
 namespace yade {
 
@@ -39,19 +40,72 @@ public:
         v.attr("twistAxis", twistAxis, "Twist of the contact plane in the last step", Attr::hidden);
     }
     // Updates normal, the plane rotation and shearInc for the current step (3.3.2); refR1,
-    // refR2, penetrationDepth and contactPoint must be set before. With avoidRatcheting (two
-    // spheres), the relative velocity is that of points at the reference radii; otherwise that of
-    // the bodies' material points at the contact point.
+    // refR2, penetrationDepth and contactPoint must be set before (Values::precompute, one contact).
     void precompute(const Kinematics& s1, const Kinematics& s2, Real dt, const Vector3r& currentNormal, bool isNew,
             const Vector3r& shift2, bool avoidRatcheting);
     // Rotates a shear vector (force or displacement) with the contact plane: (3.3.2) step 1.
     Vector3r& rotate(Vector3r& shear) const { return shear = rotated(shear); }
-    // The same on a value (kept in registers: a vector updated in memory component by component
-    // made the next whole-vector read wait for the stores).
-    Vector3r rotated(const Vector3r& shear) const { return minusCross(minusCross(shear, orthonormalAxis), twistAxis); }
-    static Vector3r minusCross(const Vector3r& v, const Vector3r& a) { // v - v × a
-        return Vector3r(v[0] - (v[1] * a[2] - v[2] * a[1]), v[1] - (v[2] * a[0] - v[0] * a[2]), v[2] - (v[0] * a[1] - v[1] * a[0]));
+    Vector3r rotated(const Vector3r& shear) const {
+        return eigen(Values<Real>::minusCross(Values<Real>::minusCross(vec3(shear), vec3(orthonormalAxis)), vec3(twistAxis)));
     }
+    // What the kernels (core/ContactKernel.hpp) read and write of a ScGeom, as values of T: one
+    // contact's (T = Real) or two contacts' (T = Two).
+    template <class T> struct Values {
+        Vec3<T> normal, contactPoint, shearInc, orthonormalAxis, twistAxis;
+        T penetrationDepth, refR1, refR2;
+        YADE_KERNEL static Values of(const ScGeom& g) {
+            return Values{vec3(g.normal), vec3(g.contactPoint), vec3(g.shearInc), vec3(g.orthonormalAxis), vec3(g.twistAxis),
+                    g.penetrationDepth, g.refR1, g.refR2};
+        }
+        YADE_KERNEL void store(Rows<ScGeom, T>& g) const {
+            g.put(&ScGeom::penetrationDepth, penetrationDepth);
+            g.put(&ScGeom::contactPoint, contactPoint);
+            g.put(&ScGeom::refR1, refR1);
+            g.put(&ScGeom::refR2, refR2);
+            g.put(&ScGeom::orthonormalAxis, orthonormalAxis);
+            g.put(&ScGeom::twistAxis, twistAxis);
+            g.put(&ScGeom::normal, normal);
+            g.put(&ScGeom::shearInc, shearInc);
+        }
+        void store(ScGeom& g) const {
+            Rows<ScGeom, Real> rows{{&g}, {true}};
+            store(rows);
+        }
+        // the bodies separated (the laws' test)
+        YADE_KERNEL MaskOf<T> apart() const { return greater(T(0.0), penetrationDepth); }
+        // a shear vector (force or displacement) turned with the contact plane: (3.3.2) step 1
+        YADE_KERNEL Vec3<T> rotated(const Vec3<T>& v) const { return minusCross(minusCross(v, orthonormalAxis), twistAxis); }
+        YADE_KERNEL static Vec3<T> minusCross(const Vec3<T>& v, const Vec3<T>& a) { // v - v × a
+            return {v.x - (v.y * a.z - v.z * a.y), v.y - (v.z * a.x - v.x * a.z), v.z - (v.x * a.y - v.y * a.x)};
+        }
+        // With `normal` now the current normal (refR1, refR2, penetrationDepth and contactPoint set):
+        // the rotation of the contact plane since the last step and the shear increment (3.3.2). With
+        // avoidRatcheting (two spheres) the relative velocity is that of points at the reference radii;
+        // otherwise that of the bodies' material points at the contact point.
+        YADE_KERNEL void precompute(const Vec3<T>& oldNormal, bool isNew, const PairMotion<T>& m, T dt, bool avoidRatcheting, const Vec3<T>& shift2) {
+            const Vec3<T> n = normal;
+            if (isNew) {
+                orthonormalAxis = twistAxis = Vec3<T>::zero();
+            } else {
+                orthonormalAxis = cross(oldNormal, n);                                              // tilt
+                twistAxis = (dt * T(0.5) * dot(oldNormal, m.angVel1 + m.angVel2)) * oldNormal; // twist
+            }
+            Vec3<T> relVel;
+            if (avoidRatcheting) {
+                // as if the spheres kept their reference radii (no granular ratcheting): lever arms
+                // refR1, refR2, and the translational part scaled by (r1+r2)/distance accordingly
+                const T r1 = refR1, r2 = refR2;
+                const Vec3<T> c1x = r1 * n, c2x = (-r2) * n;
+                const T alpha = (r1 + r2) / (r1 + r2 - penetrationDepth);
+                relVel = ((m.vel2 - m.vel1) * alpha + cross(m.angVel2, c2x)) - cross(m.angVel1, c1x);
+            } else {
+                const Vec3<T> c1x = contactPoint - m.pos1, c2x = contactPoint - (m.pos2 + shift2);
+                relVel = (m.vel2 + cross(m.angVel2, c2x)) - (m.vel1 + cross(m.angVel1, c1x));
+            }
+            relVel = relVel - dot(n, relVel) * n; // shear part only
+            shearInc = relVel * dt;
+        }
+    };
     YADE_INDEXABLE(ScGeom)
 };
 
