@@ -3,7 +3,10 @@
 
 namespace yade {
 
-BodyContainer::~BodyContainer() { unbindAll(); }
+BodyContainer::~BodyContainer() {
+    unbindAll();
+    store->views.invalidate(); // (a NumPy view may keep the store)
+}
 
 void BodyContainer::attach(Body& b) {
     b.store = store;
@@ -41,6 +44,7 @@ BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {
     }
     bodies.push_back(b);
     ++changes;
+    store->views.invalidate();
     return b->id;
 }
 
@@ -55,6 +59,7 @@ BodyContainer::id_t BodyContainer::insertAtId(const std::shared_ptr<Body>& b, id
     if ((size_t)id >= bodies.size()) bodies.resize((size_t)id + 1);
     bodies[id] = b;
     ++changes;
+    store->views.invalidate();
     return id;
 }
 
@@ -64,6 +69,7 @@ void BodyContainer::erase(id_t id) {
     bodies[id]->id = -1;
     bodies[id].reset();
     ++changes;
+    store->views.invalidate();
 }
 
 void BodyContainer::clear() {
@@ -71,6 +77,7 @@ void BodyContainer::clear() {
     bodies.clear();
     store->resize(0);
     ++changes;
+    store->views.invalidate();
 }
 
 void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long changeCount) {
@@ -86,6 +93,7 @@ void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long ch
     for (const auto& b : bodies)
         if (b) attach(*b);
     changes = changeCount;
+    store->views.invalidate();
 }
 
 } // namespace yade

@@ -7,6 +7,7 @@
 #pragma once
 #include <lib/base/Math.hpp>
 #include <lib/base/StableArray.hpp>
+#include <lib/base/ViewRegistry.hpp>
 #include <atomic>
 #include <cstddef>
 
@@ -49,6 +50,9 @@ public:
     StableArray<Real> radius{maxBodies};
     // NumPy views of pos that may be written: while there are any, cached positions are not trusted.
     std::atomic<int> writableViews{0};
+    // The NumPy views handed out, told when the set of bodies changes (insert, erase, clear,
+    // restore) or the scene is dropped: they then refuse writes (py/wrapper/ArraysWrapper.cpp).
+    ViewRegistry views;
 
     // The columns as plain pointers, for loops: taken once before the loop, they stay in registers
     // (through the StableArray members the compiler reloads each base after every store, since a

@@ -44,6 +44,7 @@ void ContactPool::destroy(size_t slot) {
 size_t ContactPool::append(const Header& h, const IGeom& g, const IPhys& p) {
     if (g.getClassIndex() != geomClass.classIndex || p.getClassIndex() != physClass.classIndex)
         throw std::logic_error("ContactPool of " + geomClass.name + "+" + physClass.name + " given " + g.getClassName() + "+" + p.getClassName());
+    if (views) views->invalidate();
     size_t slot;
     {
         std::lock_guard<std::mutex> lock(mutex);
@@ -75,6 +76,7 @@ void ContactPool::relocate(char* to, char* from) {
 
 void ContactPool::permute(const std::vector<uint32_t>& to) {
     if (to.size() != count) throw std::logic_error("ContactPool::permute: wrong size");
+    if (views) views->invalidate();
     std::vector<uint32_t> from(count);
     for (size_t s = 0; s < count; ++s) from[to[s]] = (uint32_t)s;
     std::vector<Block> spare(stride / sizeof(Block) + 1); // (one record, while a cycle moves)
@@ -99,6 +101,7 @@ void ContactPool::permute(const std::vector<uint32_t>& to) {
 }
 
 bool ContactPool::removeAt(size_t slot) {
+    if (views) views->invalidate();
     const size_t last = count - 1;
     destroy(slot);
     if (slot != last) {

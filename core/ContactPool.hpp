@@ -11,6 +11,7 @@
 #include <core/IGeom.hpp>
 #include <core/IPhys.hpp>
 #include <lib/base/StableArray.hpp>
+#include <lib/base/ViewRegistry.hpp>
 #include <lib/factory/ClassRegistry.hpp>
 #include <cstdint>
 #include <mutex>
@@ -72,6 +73,9 @@ public:
     long long lawTable = -1;
     // Where the fields are in a record, for NumPy views: stride in bytes, offsets of the objects.
     size_t stride = 0, geomOffset = 0, physOffset = 0;
+    // The NumPy views of the contacts (its InteractionContainer's): told when a record is appended,
+    // removed or moved (null: nobody to tell).
+    std::shared_ptr<ViewRegistry> views;
 
 private:
     struct alignas(16) Block {

@@ -68,6 +68,7 @@ ContactPool& InteractionContainer::poolFor(const IGeom& g, const IPhys& p, uint3
     if (nPools == maxPools) throw std::length_error("more than " + std::to_string(maxPools) + " kinds of contacts (IGeom+IPhys class pairs) in one scene");
     const ClassRegistry& reg = ClassRegistry::instance();
     pools[nPools] = std::make_shared<ContactPool>(reg.get(typeid(g)), reg.get(typeid(p)));
+    pools[nPools]->views = views;
     index = (uint32_t)nPools;
     return *pools[nPools++];
 }
@@ -289,6 +290,7 @@ void InteractionContainer::releaseObject(size_t k, const Interaction* which) {
 // ---- pairs
 
 InteractionContainer::~InteractionContainer() {
+    views->invalidate();
     for (size_t k = 0; k < size(); ++k)
         if (Interaction* I = object(k)) {
             detachViews(k);
@@ -414,6 +416,7 @@ void InteractionContainer::clear() {
             detachViews(k);
             I->erased = true;
         }
+    views->invalidate();
     for (auto& P : pools) P.reset(); // (a NumPy view may keep one)
     nPools = 0;
     records.clear();

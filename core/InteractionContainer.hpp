@@ -131,6 +131,9 @@ public:
     // The pools (null: not made yet); a NumPy view holds its pool.
     std::array<std::shared_ptr<ContactPool>, maxPools> pools;
     size_t poolCount() const { return nPools; }
+    // The NumPy views of the contacts handed out (O.interactions.arrays()), told when the set of
+    // contacts changes (through the pools, which share it) and when the pools are dropped.
+    const std::shared_ptr<ViewRegistry> views = std::make_shared<ViewRegistry>();
 
     // A pair whose object Python holds, or that has geometry or physics outside a pool (a new
     // geometry before its physics, a contact set from Python or read from a file before the loop

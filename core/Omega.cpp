@@ -173,19 +173,23 @@ double Omega::speed() const {
 void Omega::reset() {
     if (inLoopThread()) throw std::runtime_error("O.reset() cannot be called from inside the simulation loop");
     pause();
+    scenes[current]->dropViews();
     scenes[current] = std::make_shared<Scene>();
 }
 
 void Omega::resetAll() {
     if (inLoopThread()) throw std::runtime_error("O.resetAllScenes() cannot be called from inside the simulation loop");
     pause();
-    scenes[0] = std::make_shared<Scene>();
-    scenes[1] = std::make_shared<Scene>();
+    for (auto& s : scenes) {
+        s->dropViews();
+        s = std::make_shared<Scene>();
+    }
 }
 
 void Omega::setScene(std::shared_ptr<Scene> s) {
     if (inLoopThread()) throw std::runtime_error("a scene cannot be loaded from inside the simulation loop");
     pause();
+    if (s != scenes[current]) scenes[current]->dropViews();
     scenes[current] = std::move(s);
 }
 

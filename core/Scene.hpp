@@ -60,6 +60,12 @@ public:
     void positionsChanged() { positionMirror.iter = -1; }
 
     Scene();
+    // O drops this scene (O.reset(), O.load()): the NumPy views of its bodies and contacts, which
+    // may keep it, refuse writes from now on.
+    void dropViews() {
+        bodies.hot().views.invalidate();
+        interactions.views->invalidate();
+    }
     // Runs every engine once and advances iter and time (the rest of the step if sub-steps began it).
     void moveToNextTimeStep();
     // O.subStepping: a step in parts, one per call; subStep is the part to run next: -1 the step's

@@ -228,3 +228,130 @@ def test_every_view_shows_each_body_s_own_entries():
         assert a.mass[i] == b.state.mass
         assert tuple(a.force[i]) == tuple(O.forces.f(i)) and tuple(a.torque[i]) == tuple(O.forces.t(i))
     assert np.abs(a.force).max() > 0 and np.abs(a.torque).max() > 0
+
+
+# ------------------------------------------------------------------ stale views
+
+def moving_scene():
+    """Two spheres far apart, an integrator without damping or gravity."""
+    O.bodies.append([sphere((0, 0, 0), R), sphere((1, 0, 0), R)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = 1e-3
+
+
+def assert_fresh_arrays_drive_the_engine(body):
+    """A new set of arrays is writable, and a velocity written through it moves the body."""
+    a = O.bodies.arrays()
+    assert not a.stale and a.vel.flags.writeable and a.pos.flags.writeable
+    x0 = a.pos[body].copy()
+    a.vel[body] = (2.0, 0, 0)
+    O.step()
+    assert O.bodies[body].state.pos[0] == pytest.approx(x0[0] + 2.0 * O.dt, rel=1e-12)
+    assert a.pos[body][0] == O.bodies[body].state.pos[0]      # (the view shows it)
+    a.pos[body] = (x0[0], 3.0, 0)                             # positions too
+    O.step()
+    assert O.bodies[body].state.pos[1] == 3.0
+
+
+def assert_stale(a):
+    assert a.stale
+    for name in ("pos", "vel", "angVel", "ori", "mass", "inertia"):
+        arr = getattr(a, name)
+        assert not arr.flags.writeable
+        with pytest.raises(ValueError, match="read-only"):
+            arr[0] = 1
+        with pytest.raises(ValueError):
+            arr.flags.writeable = True                      # (numpy refuses: the memory's owner is not an array)
+
+
+def test_a_view_taken_before_an_append_refuses_writes():
+    moving_scene()
+    a = O.bodies.arrays()
+    assert not a.stale
+    before = O.bodies[0].state.vel[0]
+    O.bodies.append(sphere((0, 1, 0), R))
+    assert_stale(a)
+    assert O.bodies[0].state.vel[0] == before                 # nothing written
+    assert a.pos[1][0] == 1.0                                 # still readable: the columns' values
+    assert_fresh_arrays_drive_the_engine(2)
+
+
+def test_a_view_taken_before_an_erase_refuses_writes():
+    moving_scene()
+    O.bodies.append(sphere((0, 1, 0), R))
+    a = O.bodies.arrays()
+    pos = a.pos
+    O.bodies.erase(2)
+    assert_stale(a)
+    assert pos is a.pos and not a.exists[2]
+    assert_fresh_arrays_drive_the_engine(1)
+
+
+def test_a_view_taken_before_a_reset_refuses_writes_and_can_still_be_read():
+    moving_scene()
+    a = O.bodies.arrays()
+    vel = a.vel                                               # held alone, after the BodyArrays is gone
+    del a
+    O.reset()
+    assert not vel.flags.writeable
+    with pytest.raises(ValueError, match="read-only"):
+        vel[0] = (1, 0, 0)
+    assert vel.shape == (2, 3) and np.all(vel == 0)           # the old scene's last values
+    moving_scene()
+    assert_fresh_arrays_drive_the_engine(0)
+    b = O.bodies.arrays()
+    O.bodies.clear()
+    assert_stale(b)
+
+
+def test_a_slice_of_a_stale_view_refuses_writes_and_steps_go_on():
+    """A slice made from a stale view is read-only too; the steps after the change run as usual."""
+    moving_scene()
+    a = O.bodies.arrays()
+    O.bodies.append(sphere((0, 2, 0), R))
+    with pytest.raises(ValueError, match="read-only"):
+        a.pos[1:][0, 0] = 5
+    O.step()
+    assert O.bodies[1].state.pos[0] == 1.0
+
+
+def test_contact_arrays_go_stale_when_a_contact_ends():
+    pair()
+    O.step()
+    c = O.interactions.arrays()
+    assert isinstance(c, dict) and not c.stale and len(c["id1"]) == 1
+    for arr in c.values():
+        assert not arr.flags.writeable
+    O.step()                                                  # the same contact: still current
+    assert not c.stale and len(O.interactions.arrays()["id1"]) == 1
+    O.bodies[1].state.vel = (100, 0, 0)                       # away: the contact ends
+    O.run(20, True)
+    assert O.interactions.countReal() == 0
+    assert c.stale
+    with pytest.raises(ValueError, match="read-only"):
+        c["normalForce"][0] = (1, 0, 0)
+    fresh = O.interactions.arrays()
+    assert not fresh.stale and len(fresh["id1"]) == 0
+
+
+def test_contact_arrays_go_stale_when_a_contact_is_made_erased_or_the_scene_reset():
+    loop = pair(overlap=-1e-3)                                # apart: no contact yet
+    c = O.interactions.arrays()
+    assert len(c["id1"]) == 0
+    O.bodies[1].state.pos = (2 * R - 1e-4, 0, 0)              # overlapping: a contact is made
+    O.step()
+    assert c.stale
+    c = O.interactions.arrays()
+    assert len(c["id1"]) == 1 and not c.stale
+    O.interactions.erase(0, 1)
+    assert c.stale
+    O.step()
+    c = O.interactions.arrays()
+    assert len(c["id1"]) == 1 and not c.stale
+    fn = c["normalForce"].copy()
+    O.reset()
+    assert c.stale and np.array_equal(c["normalForce"], fn)   # still readable: the pool is kept
+    del loop
