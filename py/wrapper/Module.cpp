@@ -14,6 +14,7 @@
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
+#include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
 #ifdef _OPENMP
 #include <omp.h>
@@ -31,6 +32,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindShop(m);
     yade::bindSpherePack(m);
     yade::bindHertzMindlin(m);
+    yade::bindFrictVisco(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
     yade::PyRunner::setCommandRunner([](const std::string& command) {

@@ -5,3 +5,5 @@ cd "$(dirname "$0")"
 for s in bouncing_sphere oblique_impact; do
     yade -n -x -j1 "$s.py" 2>/dev/null | grep -E '^[0-9]+ [0-9]+ ' > "data/$s.txt"
 done
+# the FrictVisco law's scenes (tests/test_frictvisco.py): one JSON line
+yade -n -x -j1 frictvisco.py 2>/dev/null | grep '^FRICTVISCO ' | sed 's/^FRICTVISCO //' > data/frictvisco.json
