@@ -60,12 +60,14 @@ template <class T> struct LaneEnergy {
 //   template <class T> ContactForce<T> kernel(const typename G::template Values<T>& geom, Rows<P, T>& phys,
 //           const ContactBodies<T>& bodies, const LaneEnergy<T>& energy) const;  (a contact's forces)
 //   bool separated(P& phys) const;  (the bodies separated: whether the contact stays)
-// and gets go() and goBatch() (one contact at a time) from it.
+// and gets go() and goBatch() (one contact at a time) from it. A law whose kernel also acts on a
+// contact kept after its bodies separated (a viscous force) says so with computesApart().
 template <class Derived, class G, class P> class LawKernelFunctor : public LawFunctor {
 public:
     using GeomType = G;
     using PhysType = P;
     using KernelOf = Derived;
+    bool computesApart() const { return false; }
     std::vector<std::string> argTypes() const override { return {registeredName<G>(), registeredName<P>()}; }
     bool go(IGeom& geom, IPhys& phys, Interaction& I) final {
         const BodyColumns cols{scene->bodies.hot().columns(), nullptr, nullptr};
@@ -80,7 +82,10 @@ private:
     bool one(G& geom, P& phys, Body::id_t id1, Body::id_t id2, const BodyColumns& cols) {
         Derived& law = static_cast<Derived&>(*this);
         const auto values = G::template Values<Real>::of(geom);
-        if (values.apart()) return law.separated(phys);
+        if (values.apart()) {
+            const bool keep = law.separated(phys);
+            if (!keep || !law.computesApart()) return keep;
+        }
         const bool live[1] = {true};
         Rows<P, Real> rows{{&phys}, {true}};
         const ContactBodies<Real> bodies{cols, {{id1}}, {{id2}}};
@@ -156,7 +161,7 @@ private:
         const MaskOf<T> apart = values.apart();
         for (int i = 0; i < lanes; ++i) {
             phys.live[i] = !lane(apart, i);
-            if (!phys.live[i]) keep[i] = law.separated(*phys.p[i]);
+            if (!phys.live[i]) phys.live[i] = (keep[i] = law.separated(*phys.p[i])) && law.computesApart();
         }
         if (!phys.anyLive()) return;
         const LaneEnergy<T> energy{s.trackEnergy ? &s.energy : nullptr, phys.live};

@@ -2,21 +2,14 @@
 // linear spring and a dashpot in parallel in the normal direction, an incremental shear spring
 // with Mohr-Coulomb sliding capped by the whole normal force.
 #pragma once
-#include <cmath>
-#include <core/LawDispatcher.hpp>
+#include <core/ContactKernel.hpp>
 #include <pkg/dem/FrictViscoPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
 namespace yade {
 
-// Scalar forms of the two-lane operations (pkg/dem/TwoLanes.hpp), for the law's kernel.
-namespace frictViscoScalar {
-inline bool greater(Real a, Real b) { return a > b; }
-inline Real select(bool mask, Real a, Real b) { return mask ? a : b; }
-} // namespace frictViscoScalar
-
 class Law2_ScGeom_FrictViscoPhys_CundallStrackVisco
-        : public LawFunctorBatched<Law2_ScGeom_FrictViscoPhys_CundallStrackVisco, ScGeom, FrictViscoPhys> {
+        : public LawKernelFunctor<Law2_ScGeom_FrictViscoPhys_CundallStrackVisco, ScGeom, FrictViscoPhys> {
 public:
     static constexpr const char* classDoc =
             "Constitutive law for the FrictViscoPM: Law2_ScGeom_FrictPhys_CundallStrack with viscous damping in the normal direction. "
@@ -25,6 +18,7 @@ public:
             "rotated(Fs) - ks·Δus, is capped at |normalForce|·tan φ. With neverErase, bodies that separated keep the contact: no "
             "elastic normal force, the viscous one still acts, the shear force restarts from zero at every step.";
     bool neverErase = false, sphericalBodies = true, traceEnergy = false;
+    Real plasticDissipation = 0; // (traceEnergy) the energy dissipated by sliding since initPlasticDissipation
     template <class V> void visit(V& v) {
         LawFunctor::visit(v);
         v.attr("neverErase", neverErase, "Keep contacts whose bodies separated instead of removing them (the viscous normal force still acts)");
@@ -33,49 +27,65 @@ public:
         v.attr("traceEnergy", traceEnergy, "Sum the energy dissipated by sliding (plasticDissipation()) instead of O.energy's plastDissip; as "
                                            "in the reference, O.energy's elastPotential is then added to even without O.trackEnergy");
     }
-    bool go(ScGeom& geom, FrictViscoPhys& phys, const Contact& c);
     void prepare() override; // energy terms
+    // Python: the elastic energy of the FrictViscoPhys contacts of the current scene, Σ (|normalForce|²/kn + |shearForce|²/ks)/2.
+    static Real elasticEnergy(const Scene& scene);
 
-    // The law's arithmetic on the values of one contact (T = Real) or of two (T = lanes::Two), nothing
-    // else read or written. In: the unit normal n, the overlap u of the spring (0 once the bodies
-    // separated), the relative velocity v of body 2's point at the contact with respect to body 1's,
-    // the previous shear force already turned with the contact plane, the shear increment du, kn, ks,
-    // cn and tan φ. Out: normalForce (on body 2), normalViscous, shearForce (on body 2) and the energy
-    // dissipated by sliding (0 when it sticks).
-    template <class T>
-    static void kernel(const T n[3], T u, const T v[3], const T shearOld[3], const T du[3], T kn, T ks, T cn, T tanPhi, T normalForce[3],
-            T normalViscous[3], T shearForce[3], T& dissipated) {
-        using frictViscoScalar::greater;
-        using frictViscoScalar::select;
-        using std::sqrt;
-        // (the sums x + (y + z) and the products' grouping are the reference's: its bits)
-        const auto dot = [](const T a[3], const T b[3]) { return a[0] * b[0] + (a[1] * b[1] + a[2] * b[2]); };
-        const T vn = dot(v, n); // normal relative velocity, negative while approaching
-        const T elastic = kn * u;
-        T trial[3];
-        for (int i = 0; i < 3; ++i) {
-            normalViscous[i] = cn * (vn * n[i]);
-            normalForce[i] = elastic * n[i] - normalViscous[i];
-            trial[i] = shearOld[i] - ks * du[i];
-        }
-        const T fs2 = dot(trial, trial);
-        const T maxFs2 = dot(normalForce, normalForce) * tanPhi * tanPhi;
-        const auto sliding = greater(fs2, maxFs2); // Mohr-Coulomb: back onto the cone
-        const T ratio = select(sliding, sqrt(maxFs2) / sqrt(fs2), T(1));
-        T slip[3];
-        for (int i = 0; i < 3; ++i) {
-            shearForce[i] = select(sliding, trial[i] * ratio, trial[i]);
-            slip[i] = trial[i] - shearForce[i];
-        }
-        dissipated = select(sliding, dot(slip, shearForce) / ks, T(0));
+    // the bodies separated: the contact ends, or, kept, the shear spring restarts and only the dashpot acts
+    bool separated(FrictViscoPhys& phys) const {
+        if (!neverErase) return false;
+        phys.normalForce = phys.shearForce = Vector3r::Zero();
+        return true;
     }
-
-    // Python: the energies of the FrictViscoPhys contacts of the current scene.
-    static Real elasticEnergy(const Scene& scene); // Σ (|normalForce|²/kn + |shearForce|²/ks)/2
-    Real plasticDissipation = 0;                  // (traceEnergy) the energy dissipated by sliding since initPlasticDissipation
+    bool computesApart() const { return neverErase; }
+    template <class T>
+    YADE_KERNEL ContactForce<T> kernel(const ScGeom::Values<T>& g, Rows<FrictViscoPhys, T>& phys, const ContactBodies<T>& b, const LaneEnergy<T>&) {
+        using P = FrictViscoPhys;
+        // (the sums x + (y + z) are the reference's: its bits)
+        const auto dotRef = [](const Vec3<T>& a, const Vec3<T>& c) { return a.x * c.x + (a.y * c.y + a.z * c.z); };
+        const T zero(0.0), half(0.5), depth = g.penetrationDepth, r1 = g.refR1, r2 = g.refR2;
+        const Vec3<T> n = g.normal;
+        // the relative velocity of points at the reference radii (ScGeom's, with avoidRatcheting)
+        const Vec3<T> v = ((b.vel2() - b.vel1()) * ((r1 + r2) / (r1 + r2 - depth)) + cross(b.angVel2(), (-r2) * n)) - cross(b.angVel1(), r1 * n);
+        const T kn = phys.get(&P::kn), ks = phys.get(&P::ks), cn = phys.get(&P::cn), tanPhi = phys.get(&P::tangensOfFrictionAngle);
+        const T vn = dotRef(v, n); // negative while approaching
+        const T elastic = kn * maxZero(depth);
+        const Vec3<T> normalViscous = cn * (vn * n);
+        const Vec3<T> normalForce = elastic * n - normalViscous;
+        const Vec3<T> trial = g.rotated(phys.get(&P::shearForce)) - ks * g.shearInc;
+        const T fs2 = dotRef(trial, trial), maxFs2 = dotRef(normalForce, normalForce) * tanPhi * tanPhi;
+        const MaskOf<T> sliding = greater(fs2, maxFs2); // Mohr-Coulomb: back onto the cone
+        const T ratio = select(sliding, sqrt(maxFs2) / sqrt(fs2), T(1.0));
+        const Vec3<T> shearForce = select(sliding, trial * ratio, trial);
+        phys.set(&P::normalViscous, normalViscous);
+        phys.set(&P::normalForce, normalForce);
+        phys.set(&P::shearForce, shearForce);
+        if (traceEnergy || scene->trackEnergy) {
+            const T dissipated = select(sliding, dotRef(trial - shearForce, shearForce) / ks, zero);
+            const T stored = half * (squaredNorm(normalForce) / kn + select(greater(ks, zero), squaredNorm(shearForce) / ks, zero));
+            phys.forLive([&](int i) {
+                if (lane(dissipated, i) > 0) {
+                    if (traceEnergy) atomicAdd(plasticDissipation, lane(dissipated, i));
+                    else scene->energy.add(plastId, lane(dissipated, i));
+                }
+                scene->energy.add(elastId, lane(stored, i));
+            });
+        }
+        const Vec3<T> force = -normalForce - shearForce; // on body 1
+        if (sphericalBodies) {
+            const Vec3<T> arm = cross(n, force);
+            return {force, (r1 - half * depth) * arm, (r2 - half * depth) * arm, allSet<T>()};
+        }
+        const Vec3<T> cp = g.contactPoint;
+        return {force, cross(cp - b.pos1(), force), cross(cp - b.pos2(), -force), allSet<T>()};
+    }
 
 private:
     int elastId = -1, plastId = -1; // O.energy terms elastPotential, plastDissip
+    static void atomicAdd(Real& target, Real x) {
+#pragma omp atomic
+        target += x;
+    }
 };
 
 } // namespace yade
