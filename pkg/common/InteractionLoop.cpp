@@ -286,15 +286,56 @@ static inline void prefetchObject(const void* p) {
     for (int l = 0; l < 3; ++l) __builtin_prefetch(c + 64 * l);
 }
 
-// Entries j0 .. j1-1 of thread list `list` (at most batchEntries): quick rejects, then the Ig2
-// functors over batches of one shape-type pair, Ip2 for new contacts, and the Law2 functors over
-// runs of one (IGeom, IPhys) pair in list order (forces are added in the order of the list).
-// Existing contacts are reached through the container's columns (ids, geometry and physics
-// objects), never through their Interaction.
-void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
-        std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
-    Scene& s = *scene;
-    InteractionContainer& intrs = s.interactions;
+// (written only when it changes: the flags of both threads' interactions share cache lines, and
+// reading a line both threads only read costs nothing; writing it moves it between cores)
+static inline void setWasReal(char* wasReal, long k, bool real) {
+    if (wasReal[k] != (char)real) wasReal[k] = real;
+}
+
+// A pair whose Ig2 functor takes the shapes in the other order: its ids swapped wherever they are kept.
+void InteractionLoop::swapPair(long k) {
+    InteractionContainer& intrs = scene->interactions;
+    if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
+    std::swap(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1]);
+    if (intrs.contactOf[k] != InteractionContainer::noContact) {
+        ContactPool::Header& h = intrs.pool(intrs.contactOf[k]).header(InteractionContainer::slotOf(intrs.contactOf[k]));
+        std::swap(h.id1, h.id2);
+    }
+}
+
+// The objects and Law2 functor of pair k: a contact's from its pool record, or a geometry kept from
+// an earlier step without physics (where: contactOf[k]).
+void InteractionLoop::PoolCursor::find(const InteractionContainer& intrs, uint32_t where, long k, IGeom*& geom, IPhys*& phys, LawFunctor*& law) {
+    if (where != InteractionContainer::noContact) { // a contact: its record in a pool
+        if (InteractionContainer::poolOf(where) != index) { // (mostly all of one kind)
+            index = InteractionContainer::poolOf(where);
+            pool = intrs.pools[index].get();
+        }
+        geom = pool->geom(InteractionContainer::slotOf(where));
+        phys = pool->phys(InteractionContainer::slotOf(where));
+        law = pool->law; // (refreshed before the parallel part; null for a pool made since)
+    } else if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) {
+        geom = rec->geom.get();
+        phys = rec->phys.get();
+    }
+}
+
+// The Ig2 functor if it and the Law2 functor have a fast pass (KernelPasses, cached for the last pair asked), else null.
+IGeomFunctor* InteractionLoop::fastPass(Scratch& sc, IGeomFunctor* geom, LawFunctor* law) {
+    if (sc.passGeom != geom || sc.passLaw != law) {
+        sc.passGeom = geom;
+        sc.passLaw = law;
+        sc.pass = KernelPasses::find(*geom, *law);
+    }
+    return sc.pass ? geom : nullptr;
+}
+
+// Step 1 of processBatch: the entries j0 .. j1-1 of thread list `list` that the quick rejects
+// leave, with their Ig2 functor and, for existing contacts, their objects and Law2 functor (into
+// sc's entries and contacts); returns how many.
+size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
+        std::vector<std::pair<const Shape*, const Shape*>>& missingIg2) {
+    InteractionContainer& intrs = scene->interactions;
     const std::vector<uint32_t>& pairs = threadPairs[list];
     float* gaps = skin.active ? skin.gap[list].data() : nullptr;
     unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
@@ -303,7 +344,6 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
     Body::id_t* ids = intrs.pairIds.data();
-    Scratch& sc = *scratch[threadNumber()];
     // (written by index into arrays of batchEntries: a push_back per entry cost more than the rest of the gathering)
     if (sc.entries.size() < batchEntries) {
         sc.entries.resize(batchEntries);
@@ -315,20 +355,13 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
     // is resized below)
     Scratch::Entry* const entries = sc.entries.data();
     Contact* const contacts = sc.contacts.data();
-    char* const flags = sc.flags.data();
     char* const wasReal = intrs.wasReal.data();
-    // (written only when it changes: the flags of both threads' interactions share cache lines, and
-    // reading a line both threads only read costs nothing; writing it moves it between cores)
-    const auto setWasReal = [wasReal](long k, bool real) {
-        if (wasReal[k] != (char)real) wasReal[k] = real;
-    };
     size_t n = 0;
     sc.oneGeomFunctor = true;
     // (raw pointers: through the containers each access would reload them)
     const uint32_t* contactOf = intrs.contactOf.data();
     std::shared_ptr<IGeom>* made = sc.made.data();
-    uint32_t lastPoolIndex = InteractionContainer::noContact;
-    const ContactPool* lastPool = nullptr;
+    PoolCursor pools;
     // the dispatch entry of the last shape-class pair (consecutive pairs are mostly of one kind)
     int lastC1 = -1, lastC2 = -1;
     const DispatchTable2D<IGeomFunctor>::Entry* lastEntry = nullptr;
@@ -378,44 +411,17 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
             missingIg2.emplace_back(shapes[ids[2 * k]], shapes[ids[2 * k + 1]]);
             continue;
         }
-        if (geomEntry.swap) { // the functor takes the shapes in the other order
-            if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
-            std::swap(ids[2 * k], ids[2 * k + 1]);
-            if (intrs.contactOf[k] != InteractionContainer::noContact) {
-                ContactPool::Header& h = intrs.pool(intrs.contactOf[k]).header(InteractionContainer::slotOf(intrs.contactOf[k]));
-                std::swap(h.id1, h.id2);
-            }
-        }
+        if (geomEntry.swap) swapPair(k); // the functor takes the shapes in the other order
         IGeom* geom = nullptr;
         IPhys* phys = nullptr;
         LawFunctor* law = nullptr;
-        const uint32_t where = contactOf[k];
-        if (where != InteractionContainer::noContact) { // a contact: its record in a pool
-            if (InteractionContainer::poolOf(where) != lastPoolIndex) { // (mostly all of one kind)
-                lastPoolIndex = InteractionContainer::poolOf(where);
-                lastPool = intrs.pools[lastPoolIndex].get();
-            }
-            geom = lastPool->geom(InteractionContainer::slotOf(where));
-            phys = lastPool->phys(InteractionContainer::slotOf(where));
-            law = lastPool->law; // (refreshed before the parallel part; null for a pool made since)
-        } else if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) {
-            geom = rec->geom.get(); // (a geometry kept from an earlier step, without physics)
-            phys = rec->phys.get();
-        }
+        pools.find(intrs, contactOf[k], k, geom, phys, law);
         // the functors read the contact's objects once the whole batch is gathered: their loads
         // start now, all at once, instead of one contact after the other
         prefetchObject(geom);
         prefetchObject(phys);
         // an existing contact whose Ig2 and Law2 functors have a fast pass: both run in step 4
-        IGeomFunctor* fused = nullptr;
-        if (fuse && law && geom && phys) {
-            if (sc.passGeom != geomEntry.functor || sc.passLaw != law) {
-                sc.passGeom = geomEntry.functor;
-                sc.passLaw = law;
-                sc.pass = KernelPasses::find(*geomEntry.functor, *law);
-            }
-            if (sc.pass) fused = geomEntry.functor;
-        }
+        IGeomFunctor* fused = fuse && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
         entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
@@ -425,9 +431,15 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         }
         ++n;
     }
-    if (n == 0) return;
-    // 2. geometry: one batch per Ig2 functor (usually one or two in a batch of entries)
-    const BodyColumns columns{s.bodies.hot().columns(), shapes, shapeCache.radius.data()};
+    return n;
+}
+
+// Step 2 of processBatch: the geometry of the entries, one batch per Ig2 functor (usually one or
+// two in a batch of entries); entries[e].real is the functor's answer.
+void InteractionLoop::computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns) {
+    Scratch::Entry* const entries = sc.entries.data();
+    Contact* const contacts = sc.contacts.data();
+    char* const flags = sc.flags.data();
     if (sc.oneGeomFunctor) { // (the common case: all of one shape pair)
         entries[0].geom->goBatch(columns, contacts, n, flags);
         for (size_t e = 0; e < n; ++e) entries[e].real = flags[e];
@@ -450,8 +462,77 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
             }
         }
     }
-    // 3. in list order: contacts that ended, physics of new ones, and each one's Law2 functor
+}
+
+// A new contact (step 3): its geometry (made in this step, or kept from an earlier one) and its
+// physics from the Ip2 functor join a pool; false (and error set where it is one) if it cannot.
+bool InteractionLoop::makeNewContact(Scratch& sc, Contact& c, long k, std::string& error) {
+    Scene& s = *scene;
+    InteractionContainer& intrs = s.interactions;
     const BodyContainer& bodies = s.bodies;
+        std::shared_ptr<IGeom> geom = std::move(*c.made);
+        if (!geom)
+            if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) geom = rec->geom;
+        if (!geom) {
+#pragma omp critical(yadeError)
+            error = "an Ig2 functor found bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + " in contact but made no geometry";
+            return false;
+        }
+        const Body& b1 = *bodies[c.id1];
+        const Body& b2 = *bodies[c.id2];
+        const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
+        if (!physEntry || !physEntry->functor) {
+            const InteractionContainer::Record* rec = intrs.record((size_t)k);
+            if (!rec || rec->geom != geom) intrs.keepGeom((size_t)k, geom); // (for the next step)
+            if (physEntry) {
+#pragma omp critical(yadeError)
+                error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
+                        + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
+            }
+            return false;
+        }
+        // (the Ip2 functors take an Interaction: this thread's stand-in, so that no object is
+        // made per contact)
+        Interaction& I = sc.standIn;
+        I.id1 = c.id1;
+        I.id2 = c.id2;
+        I.geom = geom;
+        I.phys.reset();
+        bool failed = false;
+        try {
+            physEntry->functor->go(b1.material, b2.material, I);
+        } catch (const std::exception& e) { // (not out of the parallel region: reported after it)
+            I.phys.reset();
+            failed = true;
+#pragma omp critical(yadeError)
+            error = physEntry->functor->getClassName() + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + "): " + e.what();
+        }
+        std::shared_ptr<IPhys> phys = std::move(I.phys);
+        I.geom.reset();
+        if (!phys) {
+            if (failed) return false;
+#pragma omp critical(yadeError)
+            error = physEntry->functor->getClassName() + " made no physics for bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2);
+            return false;
+        }
+        intrs.makeContact((size_t)k, geom, phys, s.iter);
+        c.geom = intrs.geom((size_t)k);
+        c.phys = intrs.phys((size_t)k);
+#pragma omp critical(yadeNewContact)
+        {
+            s.newContactBodies.push_back(c.id1);
+            s.newContactBodies.push_back(c.id2);
+        }
+    return true;
+}
+
+// Step 3 of processBatch, in list order: contacts that ended, physics of new ones, and each one's
+// Law2 functor; the entries left for step 4 are compacted to the front, their count returned.
+size_t InteractionLoop::settleContacts(Scratch& sc, size_t n, std::string& error) {
+    InteractionContainer& intrs = scene->interactions;
+    Scratch::Entry* const entries = sc.entries.data();
+    Contact* const contacts = sc.contacts.data();
+    char* const wasReal = intrs.wasReal.data();
     size_t live = 0;
     for (size_t e = 0; e < n; ++e) {
         Scratch::Entry& x = entries[e];
@@ -467,65 +548,10 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
             else if (*c.made) intrs.keepGeom((size_t)x.k, std::move(*c.made)); // (made, yet not a contact)
-            setWasReal(x.k, false);
+            setWasReal(wasReal, x.k, false);
             continue;
         }
-        if (!c.phys) { // a new contact
-            // its geometry: made in this step, or kept from an earlier one
-            std::shared_ptr<IGeom> geom = std::move(*c.made);
-            if (!geom)
-                if (const InteractionContainer::Record* rec = intrs.record((size_t)x.k)) geom = rec->geom;
-            if (!geom) {
-#pragma omp critical(yadeError)
-                error = "an Ig2 functor found bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + " in contact but made no geometry";
-                continue;
-            }
-            const Body& b1 = *bodies[c.id1];
-            const Body& b2 = *bodies[c.id2];
-            const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
-            if (!physEntry || !physEntry->functor) {
-                const InteractionContainer::Record* rec = intrs.record((size_t)x.k);
-                if (!rec || rec->geom != geom) intrs.keepGeom((size_t)x.k, geom); // (for the next step)
-                if (physEntry) {
-#pragma omp critical(yadeError)
-                    error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
-                            + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
-                }
-                continue;
-            }
-            // (the Ip2 functors take an Interaction: this thread's stand-in, so that no object is
-            // made per contact)
-            Interaction& I = sc.standIn;
-            I.id1 = c.id1;
-            I.id2 = c.id2;
-            I.geom = geom;
-            I.phys.reset();
-            bool failed = false;
-            try {
-                physEntry->functor->go(b1.material, b2.material, I);
-            } catch (const std::exception& e) { // (not out of the parallel region: reported after it)
-                I.phys.reset();
-                failed = true;
-#pragma omp critical(yadeError)
-                error = physEntry->functor->getClassName() + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + "): " + e.what();
-            }
-            std::shared_ptr<IPhys> phys = std::move(I.phys);
-            I.geom.reset();
-            if (!phys) {
-                if (failed) continue;
-#pragma omp critical(yadeError)
-                error = physEntry->functor->getClassName() + " made no physics for bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2);
-                continue;
-            }
-            intrs.makeContact((size_t)x.k, geom, phys, s.iter);
-            c.geom = intrs.geom((size_t)x.k);
-            c.phys = intrs.phys((size_t)x.k);
-#pragma omp critical(yadeNewContact)
-            {
-                s.newContactBodies.push_back(c.id1);
-                s.newContactBodies.push_back(c.id2);
-            }
-        }
+        if (!c.phys && !makeNewContact(sc, c, x.k, error)) continue; // a new contact
         const ContactPool& pool = intrs.pool(intrs.contactOf[x.k]);
         // (the pool's, chosen before the parallel part; for a pool made since, chosen here)
         x.law = pool.lawTable == lawDispatcher->tableGeneration() ? pool.law : lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
@@ -540,7 +566,17 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         }
         ++live;
     }
-    // 4. forces: runs of one Law2 functor (fused with its Ig2 functor or not), in list order
+    return live;
+}
+
+// Step 4 of processBatch: the forces, over runs of one Law2 functor (with its Ig2 functor in a
+// fast pass or not), in list order; contacts the law ends become potential.
+void InteractionLoop::applyLaws(Scratch& sc, size_t live, const BodyColumns& columns, std::string& error) {
+    InteractionContainer& intrs = scene->interactions;
+    Scratch::Entry* const entries = sc.entries.data();
+    Contact* const contacts = sc.contacts.data();
+    char* const flags = sc.flags.data();
+    char* const wasReal = intrs.wasReal.data();
     for (size_t first = 0; first < live;) {
         LawFunctor* f = entries[first].law;
         IGeomFunctor* fused = entries[first].fused;
@@ -557,10 +593,24 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         for (size_t e = first; e < last; ++e) {
             const bool keep = flags[e - first];
             if (!keep) intrs.endContact((size_t)entries[e].k); // back to a potential interaction
-            setWasReal(entries[e].k, keep);
+            setWasReal(wasReal, entries[e].k, keep);
         }
         first = last;
     }
+}
+
+// Entries j0 .. j1-1 of thread list `list` (at most batchEntries), in four steps: gatherBatch,
+// computeGeometry, settleContacts, applyLaws. Forces are added in the order of the list. Existing
+// contacts are reached through the container's columns, never through their Interaction.
+void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
+        std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
+    Scratch& sc = *scratch[threadNumber()];
+    const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
+    if (n == 0) return;
+    const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
+    computeGeometry(sc, n, columns);
+    const size_t live = settleContacts(sc, n, error);
+    applyLaws(sc, live, columns, error);
 }
 
 void InteractionLoop::action() {

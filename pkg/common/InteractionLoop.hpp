@@ -185,6 +185,20 @@ private:
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
             std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error);
+    // its four steps, and what they share
+    size_t gatherBatch(Scratch& sc, int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
+            std::vector<std::pair<const Shape*, const Shape*>>& missingIg2);
+    void computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns);
+    size_t settleContacts(Scratch& sc, size_t n, std::string& error);
+    bool makeNewContact(Scratch& sc, Contact& c, long k, std::string& error);
+    void applyLaws(Scratch& sc, size_t live, const BodyColumns& columns, std::string& error);
+    void swapPair(long k);
+    IGeomFunctor* fastPass(Scratch& sc, IGeomFunctor* geom, LawFunctor* law);
+    struct PoolCursor { // the pool of the last contact looked up (consecutive ones are mostly of one kind)
+        uint32_t index = InteractionContainer::noContact;
+        const ContactPool* pool = nullptr;
+        void find(const InteractionContainer& intrs, uint32_t where, long k, IGeom*& geom, IPhys*& phys, LawFunctor*& law);
+    };
     static int threadNumber() {
 #ifdef _OPENMP
         return omp_get_thread_num();
