@@ -626,10 +626,10 @@ void InteractionLoop::action() {
     }
 }
 
-void InteractionLoop::runLoop() {
+// The dispatch tables resolved (and the functor chain checked when they changed), every functor
+// told its scene.
+void InteractionLoop::prepareFunctors() {
     Scene& s = *scene;
-    if (!geomDispatcher || !physDispatcher || !lawDispatcher) // (None assigned from Python or read from a file)
-        throw std::invalid_argument("InteractionLoop: geomDispatcher, physDispatcher and lawDispatcher must not be None");
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
     if (changed) checkFunctorChain();
     for (auto* d : std::initializer_list<Dispatcher*>{geomDispatcher.get(), physDispatcher.get(), lawDispatcher.get()})
@@ -637,7 +637,96 @@ void InteractionLoop::runLoop() {
             f->scene = &s;
             f->prepare();
         }
+}
 
+// Each pool's Law2 functor, for the current law table (before the parallel part reads them).
+void InteractionLoop::refreshPoolLaws() {
+    InteractionContainer& intrs = scene->interactions;
+    for (size_t p = 0; p < intrs.poolCount(); ++p) { // each kind of contact's Law2 functor, for this table
+        ContactPool& pool = *intrs.pools[p];
+        if (pool.lawTable == lawDispatcher->tableGeneration()) continue;
+        pool.law = pool.size() > 0 ? lawDispatcher->getFunctor(*pool.geom(0), *pool.phys(0)).functor : nullptr;
+        pool.lawTable = pool.size() > 0 ? lawDispatcher->tableGeneration() : -1;
+    }
+}
+
+// The entries of thread list `list` to test in this step (work[list]'s count and todo): all, or with
+// the skin those not certainly beyond reach since their last test (gathered without branches: which
+// ones are skipped is unpredictable). skipAbove: the margins 2D' of sphere pairs and facet pairs.
+void InteractionLoop::gatherTodo(int list, const Real* skipAbove) {
+    const std::vector<uint32_t>& pairs = threadPairs[list];
+    const float* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    ListWork& w = *work[list];
+    w.count = pairs.size();
+    w.todo = nullptr;
+    if (gaps) {
+        std::vector<unsigned>& entries = skin.todo[list];
+        std::vector<unsigned>& near = skin.near[list];
+        const unsigned char* withFacet = skin.withFacet[list].data();
+        std::array<Real, 2>& nearLimit = skin.nearLimit[list];
+        size_t count = 0;
+        if (skipAbove[0] <= nearLimit[0] && skipAbove[1] <= nearLimit[1]) { // the entries left out of near are still beyond reach
+            entries.resize(near.size());
+            for (const unsigned i : near) {
+                entries[count] = i;
+                count += !(gaps[i] > skipAbove[withFacet[i]]);
+            }
+        } else { // all, keeping those within twice this step's margin as near
+            nearLimit = {2 * skipAbove[0], 2 * skipAbove[1]};
+            entries.resize(pairs.size());
+            near.resize(pairs.size());
+            size_t nearCount = 0;
+            for (size_t i = 0; i < pairs.size(); ++i) {
+                entries[count] = (unsigned)i;
+                count += !(gaps[i] > skipAbove[withFacet[i]]);
+                near[nearCount] = (unsigned)i;
+                nearCount += !(gaps[i] > nearLimit[withFacet[i]]);
+            }
+            near.resize(nearCount);
+        }
+        w.count = count;
+        w.todo = entries.data();
+    }
+}
+
+// With several threads: this thread's own chunks from the front, then the others' last chunks (their
+// forces and energies captured), then the forces of its own chunks that others did, in chunk order:
+// every force is added in the order the list's thread alone would have added it.
+template <class Process> void InteractionLoop::runChunks(int first, int step, int threads, Process& process) {
+    Scene& s = *scene;
+    unsigned c;
+    for (int list = first; list < threads; list += step) // own chunks, from the front
+        while (work[list]->queue.takeFront(c)) process(list, (size_t)c * chunkEntries, std::min(work[list]->count, ((size_t)c + 1) * chunkEntries));
+    for (int other = 0; other < threads; ++other) { // then the others' last chunks
+        if ((other - first) % step == 0 && other >= first) continue;
+        ListWork& w = *work[other];
+        while (!w.queue.published()) std::this_thread::yield(); // (its thread is gathering the entries)
+        while (w.queue.takeBack(c)) {
+            w.captured[c].clear();
+            w.capturedEnergy[c].clear();
+            s.forces.capture(&w.captured[c]);
+            s.energy.capture(&w.capturedEnergy[c]);
+            process(other, (size_t)c * chunkEntries, std::min(w.count, ((size_t)c + 1) * chunkEntries));
+            s.forces.capture(nullptr);
+            s.energy.capture(nullptr);
+            w.queue.markDone(c);
+        }
+    }
+    for (int list = first; list < threads; list += step) { // the forces of own chunks done by others, in order
+        ListWork& w = *work[list];
+        for (c = w.queue.stolenFrom(); c < w.queue.count(); ++c) {
+            w.queue.waitDone(c);
+            s.forces.applyCaptured(w.captured[c]);
+            s.energy.applyCaptured(w.capturedEnergy[c]);
+        }
+    }
+}
+
+void InteractionLoop::runLoop() {
+    Scene& s = *scene;
+    if (!geomDispatcher || !physDispatcher || !lawDispatcher) // (None assigned from Python or read from a file)
+        throw std::invalid_argument("InteractionLoop: geomDispatcher, physDispatcher and lawDispatcher must not be None");
+    prepareFunctors();
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
     const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
@@ -647,12 +736,7 @@ void InteractionLoop::runLoop() {
         intrs.objectsWrites = externalWrites();
         intrs.syncObjects();
     }
-    for (size_t p = 0; p < intrs.poolCount(); ++p) { // each kind of contact's Law2 functor, for this table
-        ContactPool& pool = *intrs.pools[p];
-        if (pool.lawTable == lawDispatcher->tableGeneration()) continue;
-        pool.law = pool.size() > 0 ? lawDispatcher->getFunctor(*pool.geom(0), *pool.phys(0)).functor : nullptr;
-        pool.lawTable = pool.size() > 0 ? lawDispatcher->tableGeneration() : -1;
-    }
+    refreshPoolLaws();
     intrs.prepareRecords(); // (the parallel part makes records without moving any)
     // the records of the contacts that end leave their pools when the parallel part is over (also
     // when it throws)
@@ -723,75 +807,15 @@ void InteractionLoop::runLoop() {
         for (size_t b0 = j0; b0 < j1; b0 += batchEntries) processBatch(list, b0, std::min(j1, b0 + batchEntries), quick, twiceD, missingIg2, error);
     };
     for (int list = first; list < threads; list += step) { // (one list each unless fewer threads came)
-        // the entries to test: all, or with the skin those not certainly beyond reach since their
-        // last test (gathered without branches: which ones are skipped is unpredictable)
-        const std::vector<uint32_t>& pairs = threadPairs[list];
-        const float* gaps = skin.active ? skin.gap[list].data() : nullptr;
         ListWork& w = *work[list];
-        w.count = pairs.size();
-        w.todo = nullptr;
-        if (gaps) {
-            std::vector<unsigned>& entries = skin.todo[list];
-            std::vector<unsigned>& near = skin.near[list];
-            const unsigned char* withFacet = skin.withFacet[list].data();
-            std::array<Real, 2>& nearLimit = skin.nearLimit[list];
-            size_t count = 0;
-            if (skipAbove[0] <= nearLimit[0] && skipAbove[1] <= nearLimit[1]) { // the entries left out of near are still beyond reach
-                entries.resize(near.size());
-                for (const unsigned i : near) {
-                    entries[count] = i;
-                    count += !(gaps[i] > skipAbove[withFacet[i]]);
-                }
-            } else { // all, keeping those within twice this step's margin as near
-                nearLimit = {2 * skipAbove[0], 2 * skipAbove[1]};
-                entries.resize(pairs.size());
-                near.resize(pairs.size());
-                size_t nearCount = 0;
-                for (size_t i = 0; i < pairs.size(); ++i) {
-                    entries[count] = (unsigned)i;
-                    count += !(gaps[i] > skipAbove[withFacet[i]]);
-                    near[nearCount] = (unsigned)i;
-                    nearCount += !(gaps[i] > nearLimit[withFacet[i]]);
-                }
-                near.resize(nearCount);
-            }
-            w.count = count;
-            w.todo = entries.data();
-        }
+        gatherTodo(list, skipAbove);
         const unsigned chunks = steal ? (unsigned)((w.count + chunkEntries - 1) / chunkEntries) : 0;
         if (w.captured.size() < chunks) w.captured.resize(chunks);
         if (w.capturedEnergy.size() < chunks) w.capturedEnergy.resize(chunks);
         w.queue.reset(chunks);
         if (!steal) process(list, 0, w.count);
     }
-    if (steal) {
-        unsigned c;
-        for (int list = first; list < threads; list += step) // own chunks, from the front
-            while (work[list]->queue.takeFront(c)) process(list, (size_t)c * chunkEntries, std::min(work[list]->count, ((size_t)c + 1) * chunkEntries));
-        for (int other = 0; other < threads; ++other) { // then the others' last chunks
-            if ((other - first) % step == 0 && other >= first) continue;
-            ListWork& w = *work[other];
-            while (!w.queue.published()) std::this_thread::yield(); // (its thread is gathering the entries)
-            while (w.queue.takeBack(c)) {
-                w.captured[c].clear();
-                w.capturedEnergy[c].clear();
-                s.forces.capture(&w.captured[c]);
-                s.energy.capture(&w.capturedEnergy[c]);
-                process(other, (size_t)c * chunkEntries, std::min(w.count, ((size_t)c + 1) * chunkEntries));
-                s.forces.capture(nullptr);
-                s.energy.capture(nullptr);
-                w.queue.markDone(c);
-            }
-        }
-        for (int list = first; list < threads; list += step) { // the forces of own chunks done by others, in order
-            ListWork& w = *work[list];
-            for (c = w.queue.stolenFrom(); c < w.queue.count(); ++c) {
-                w.queue.waitDone(c);
-                s.forces.applyCaptured(w.captured[c]);
-                s.energy.applyCaptured(w.capturedEnergy[c]);
-            }
-        }
-    }
+    if (steal) runChunks(first, step, threads, process);
     }
     pairsTested = 0;
     for (const auto& w : work) pairsTested += (long long)w->count;

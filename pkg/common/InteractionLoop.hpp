@@ -46,6 +46,10 @@ public:
 
 private:
     void runLoop(); // the step's work, without the callbacks
+    void prepareFunctors();
+    void refreshPoolLaws();
+    void gatherTodo(int list, const Real* skipAbove);
+    template <class Process> void runChunks(int first, int step, int threads, Process& process);
     std::set<std::pair<int, int>> warnedShapePairs;
     // Per step, contiguous, indexed by body id: sphere centers (shapePos) and radii (shapeRadius:
     // sphere > 0; facet: -1 - (index into facetPlanes); anything else NaN), and facet planes, so
