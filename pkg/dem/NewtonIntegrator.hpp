@@ -12,6 +12,7 @@
 namespace yade {
 
 class Scene;
+struct IntegratorStep; // the constants and columns of one step (NewtonIntegrator.cpp)
 
 // Raised when the integrator finds a diverging state; the message names the body, the step and the cause.
 struct StabilityError : std::runtime_error {
@@ -57,8 +58,23 @@ private:
     struct EnergyTerms {
         int grav = -1, kin = -1, kinRot = -1, damp = -1;
     };
-    void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
+    // What a thread found over its bodies: combined over the threads after the parallel part.
+    struct Extremes {
+        Real maxV2 = 0;     // the largest squared velocity
+        Real maxMoved2 = 0; // the largest squared distance from the skin's reference positions
+        long diverged = -1; // the largest id of a body whose new state is not finite (not written)
+    };
     long long warnedNoReset = -2; // the step of the last missing-ForceResetter warning
+    // The stages of a step, in order (NewtonIntegrator.cpp):
+    void gatherForces(Scene& s);
+    EnergyTerms energyTerms(Scene& s) const;
+    IntegratorStep prepareStep(Scene& s);
+    void prepareStealing(int threads);
+    void integrateShare(const IntegratorStep& st, long n, bool steal, const EnergyTerms& ids, Extremes& x);
+    void integrateRange(const IntegratorStep& st, long lo, long hi, EnergySums& e, Extremes& x);
+    void addChunkEnergies(Scene& s, int threads, const EnergyTerms& ids) const;
+    void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
+    void publishPositions(Scene& s, const IntegratorStep& st, bool continues, long long writesBefore, const Extremes& x);
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
 public:
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
