@@ -7,7 +7,6 @@
 #include <cstring>
 #include <string>
 #include <pkg/dem/ScGeom.hpp>
-#include <pkg/dem/ViscElPhys.hpp>
 #include <sstream>
 #include <thread>
 
@@ -518,12 +517,14 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
     os.precision(3);
     os << "Simulation unstable at step " << s.iter << ", body #" << id << ": " << what << ". Likely cause: ";
     Real maxOverlap = 0;
-    const ViscElPhys* rolling = nullptr; // a contact with rolling resistance (its torque grows with the relative spin)
+    std::string spin; // what in its contacts can make its spin explode (IPhys::diagnoseSpin; of the last such contact)
     for (const auto& partner : s.interactions.partnersOf(id)) {
         if (const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(partner.k)))
             maxOverlap = std::max(maxOverlap, g->penetrationDepth / std::max(std::min(g->refR1 > 0 ? g->refR1 : g->refR2, g->refR2), Real(1e-300)));
-        if (const auto* p = dynamic_cast<const ViscElPhys*>(s.interactions.phys(partner.k)))
-            if (p->mR > 0) rolling = p;
+        if (const IPhys* p = s.interactions.phys(partner.k)) {
+            std::string why = p->diagnoseSpin();
+            if (!why.empty()) spin = std::move(why);
+        }
     }
     const BodyHot state = s.bodies.hot().get((size_t)id);
     const int xyz = State::DOF_X | State::DOF_Y | State::DOF_Z;
@@ -536,11 +537,8 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
            << ") or a GlobalStiffnessTimeStepper";
     else if (maxOverlap > 0.5)
         os << "an overlap of " << 100 * maxOverlap << "% of the radius: the bodies were placed overlapping or the loading is too fast";
-    else if (rolling)
-        os << "the rolling resistance of its contacts (ViscElPhys.mR=" << rolling->mR << ", mRtype=" << rolling->mRtype
-           << "): its torque is mR·|Fn| times the relative spin (mRtype 2: also times the spin's speed at the contact), "
-           << "stable only while O.dt·mR·|Fn| (mRtype 2: ·|Δ(ω×arm)|) stays below about twice the body's moment of inertia; "
-           << "use a smaller O.dt or mR";
+    else if (!spin.empty())
+        os << spin;
     else
         os << "none of the usual ones (time step below the critical " << crit.dt
            << ", overlaps moderate): check forces added from Python and prescribed velocities";
