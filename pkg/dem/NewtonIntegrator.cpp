@@ -346,37 +346,39 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
 // InteractionLoop). With several threads, a thread that is done helps with the others' last bodies
 // (on shared machines a core is often slower than the other for a while): its own chunks from the
 // front, then the others' last ones (ChunkQueue.hpp), the energy terms per chunk (summed in order
-// by addChunkEnergies).
-void NewtonIntegrator::integrateShare(const IntegratorStep& st, long n, bool steal, const EnergyTerms& ids, Extremes& x) {
-    const auto range = myThreadRange(n);
-    const long begin = range.first, end = range.second;
+// by addChunkEnergies). The queues were filled before the parallel region (prepareStealing): a
+// thread that starts late (its core busy with another process) finds its chunks taken, and no
+// thread waits for another to start.
+void NewtonIntegrator::integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x) {
     EnergySums mySums; // this thread's energy terms (without work stealing)
-    ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;
-    if (!myQueue) integrateRange(st, begin, end, mySums, x);
-    else {
-        const unsigned chunks = (unsigned)((end - begin + chunkBodies - 1) / chunkBodies);
-        chunkSums[omp_get_thread_num()].assign(chunks, EnergySums());
-        myQueue->reset(chunks);
-        unsigned c;
-        while (myQueue->takeFront(c))
-            integrateRange(st, begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies), chunkSums[omp_get_thread_num()][c], x);
-        const int team = omp_get_num_threads();
-        for (int other = 0; other < team; ++other) {
-            ChunkQueue& q = *queues[other];
-            if (&q == myQueue) continue;
-            while (!q.published()) std::this_thread::yield();
-            const auto r = threadRange(n, other, team);
-            while (q.takeBack(c)) integrateRange(st, r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies), chunkSums[other][c], x);
+    const int team = omp_get_num_threads();
+    if (threads == 1 || team != threads) { // (fewer threads came: each its range, the chunks' sums left at zero)
+        const auto range = myThreadRange(n);
+        integrateRange(st, range.first, range.second, mySums, x);
+    } else {
+        const int me = omp_get_thread_num();
+        for (int k = 0; k < team; ++k) { // own chunks from the front, then the others' from the back
+            const int t = (me + k) % team;
+            ChunkQueue& q = *queues[t];
+            const auto r = threadRange(n, t, team);
+            unsigned c;
+            while (t == me ? q.takeFront(c) : q.takeBack(c))
+                integrateRange(st, r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies), chunkSums[t][c], x);
         }
     }
     if (mySums.any) addEnergy(*st.scene, mySums, ids);
 }
 
-void NewtonIntegrator::prepareStealing(int threads) {
+// Before the parallel region: each thread's range cut into chunks, all published.
+void NewtonIntegrator::prepareStealing(int threads, long n) {
     while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
-    for (auto& q : queues) q->unpublish();
     chunkSums.resize(threads);
-    for (auto& sums : chunkSums) sums.clear(); // (a thread that does not come leaves its range's empty)
+    for (int t = 0; t < threads; ++t) {
+        const auto r = threadRange(n, t, threads);
+        const unsigned chunks = (unsigned)((r.second - r.first + chunkBodies - 1) / chunkBodies);
+        chunkSums[t].assign(chunks, EnergySums());
+        queues[t]->reset(chunks);
+    }
 }
 
 // With work stealing: the energy terms per range, chunk by chunk in order: the same sums whoever computed each chunk.
@@ -488,14 +490,14 @@ void NewtonIntegrator::action() {
     const long n = (long)s.bodies.size();
     const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
     const bool steal = threads > 1;
-    if (steal) prepareStealing(threads);
+    if (steal) prepareStealing(threads, n);
     Real maxV2 = 0, maxMoved2 = 0;
     long diverged = -1;
 #pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2, diverged)
     {
         if (checkFresh) checkFreshContacts(s, fresh, crit);
         Extremes mine;
-        if (!(st.dt > crit.dt)) integrateShare(st, n, steal, ids, mine); // (the same answer in every thread)
+        if (!(st.dt > crit.dt)) integrateShare(st, n, threads, ids, mine); // (the same answer in every thread)
         maxV2 = std::max(maxV2, mine.maxV2);
         maxMoved2 = std::max(maxMoved2, mine.maxMoved2);
         diverged = std::max(diverged, mine.diverged);

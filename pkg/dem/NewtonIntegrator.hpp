@@ -69,8 +69,8 @@ private:
     void gatherForces(Scene& s);
     EnergyTerms energyTerms(Scene& s) const;
     IntegratorStep prepareStep(Scene& s);
-    void prepareStealing(int threads);
-    void integrateShare(const IntegratorStep& st, long n, bool steal, const EnergyTerms& ids, Extremes& x);
+    void prepareStealing(int threads, long n);
+    void integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x);
     void integrateRange(const IntegratorStep& st, long lo, long hi, EnergySums& e, Extremes& x);
     void addChunkEnergies(Scene& s, int threads, const EnergyTerms& ids) const;
     void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
