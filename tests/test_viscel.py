@@ -257,3 +257,19 @@ def test_saved_and_loaded_scene_goes_on_the_same(tmp_path):
     assert isinstance(O.interactions[0, 1].phys, ViscElPhys) and O.materials[0].mR == 0.01
     O.run(50, True)
     assert state([0, 1]) == after
+
+
+def test_a_spin_made_unstable_by_rolling_resistance_is_diagnosed():
+    """O.dt below the stiffnesses' critical step, but a rolling resistance far too large for it: the run stops with a
+    StabilityError naming mR (ViscElPhys.diagnoseSpin, what the integrator asks each contact's physics)."""
+    from yade import StabilityError
+    m = mat(tc=5e-4, en=0.3, et=0.3, frictionAngle=0.5, mR=1e4, mRtype=1)
+    O.bodies.append(sphere((0, 0, 0), 0.01, material=m, fixed=True))
+    O.bodies.append(sphere((0.001, 0, 0.0199), 0.01, material=m))
+    O.bodies[0].state.angVel = (0, 0, 5)
+    O.bodies[1].state.angVel = (3, -20, 0)
+    engines((0, 0, -9.81))
+    O.dt = 5e-5
+    with pytest.raises(StabilityError, match=r'body #1: .*Likely cause: the rolling resistance of its contacts '
+                       r'\(ViscElPhys\.mR=1e\+04, mRtype=1\): .*use a smaller O\.dt or mR$'):
+        O.run(20000, True)

@@ -14,7 +14,7 @@ namespace yade {
 
 class ChunkQueue {
 public:
-    // A new round of n chunks, none taken (by the owner, before it publishes the queue).
+    // A new round of n chunks, none taken (by the owner, or by any thread before the parallel region).
     void reset(unsigned n) {
         if (n > capacity) {
             doneFlags.reset(new std::atomic<char>[n]);

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <string>
 #include <pkg/dem/ScGeom.hpp>
-#include <pkg/dem/ViscElPhys.hpp>
 #include <sstream>
 #include <thread>
 
@@ -131,6 +130,272 @@ static inline Vector3r freeGravity(const Vector3r& g, int blocked) {
     return a;
 }
 
+// The constants of a step: the engine's attributes and the scene's columns. The functions below
+// work on a local copy: through references, every bool or char store made the compiler reload
+// each base pointer.
+struct IntegratorStep {
+    Scene* scene;
+    Real dt, lambda; // lambda: the damping
+    Vector3r g;
+    bool gravityDamped, aspherical, energy, split;
+    int moveMask;
+    BodyStore::Columns h;
+    Vector3r* mir;             // Scene::positionMirror: every body's position after this step
+    const Vector3r* F;         // the force and torque totals
+    const Vector3r* T;
+    char* spins;               // NewtonIntegrator::spinning
+    const Vector3r* reference; // the skin's reference positions (Scene::PositionMirror), or null
+};
+
+// A body's energy terms in a step, or their sums over bodies (kin: all the kinetic energy, or its
+// translational part with kinSplit).
+struct BodyEnergy {
+    Real grav = 0, kin = 0, kinRot = 0, damp = 0;
+};
+
+// What an aspherical body's step adds to the new state. (The new state is kept in locals, not in one
+// record: the compiler kept such a record in memory, 15 instructions more per body.)
+struct AsphericalUpdate {
+    Quaternionr ori; // (when turned)
+    bool turned = false;
+    Vector3r* angMom = nullptr; // (its State.angMom, and the new value)
+    Vector3r newAngMom = Vector3r::Zero();
+};
+
+// Translation (3.5.1): the acceleration of the gathered force on the free translations, with gravity
+// (damped with it when dampGravity) and the damping (3.5.12); undamped: the same before damping.
+static inline Vector3r linearAccel(const IntegratorStep& st, const Vector3r& force, Real mass, int blocked, bool damped,
+        const Vector3r& vel, const Vector3r& gFree, Vector3r& undamped) {
+    Vector3r accel = accelOf(force, Vector3r::Constant(mass), blocked, 0);
+    if (st.gravityDamped) accel += gFree;
+    undamped = accel;
+    if (damped) NewtonIntegrator::damp(accel, vel, st.dt, st.lambda);
+    if (!st.gravityDamped) accel += gFree;
+    return accel;
+}
+
+// Energy terms of a body's step (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with
+// positions x_n): the work of gravity over the move x_{n-1} -> x_n, the kinetic energy (one term, or
+// translational and rotational with kinSplit), the work of the damping. vel, angVel: before the step.
+static inline void energyOfSphere(const IntegratorStep& st, Real mass, const Vector3r& inertia, const Vector3r& gFree, const Vector3r& vel,
+        const Vector3r& accel, const Vector3r& undamped, const Vector3r& angVel, const Vector3r& angAccel, const Vector3r& angUndamped, BodyEnergy& e) {
+    const Vector3r v = vel + 0.5 * st.dt * accel, w = angVel + 0.5 * st.dt * angAccel;
+    e.grav = -mass * gFree.dot(vel) * st.dt;
+    if (st.split) {
+        e.kin = 0.5 * mass * v.squaredNorm();
+        e.kinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
+    } else
+        e.kin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
+    e.damp = -st.dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
+}
+
+static inline void energyOfAspherical(const IntegratorStep& st, Real mass, const Vector3r& gFree, const Vector3r& vel, const Vector3r& accel,
+        const Vector3r& undamped, const AsphericalTurn& t, BodyEnergy& e) {
+    const Vector3r v = vel + 0.5 * st.dt * accel;
+    e.grav = -mass * gFree.dot(vel) * st.dt;
+    const Real trans = 0.5 * mass * v.squaredNorm();
+    if (st.split) {
+        e.kin = trans;
+        e.kinRot = t.kinetic;
+    } else
+        e.kin = trans + t.kinetic;
+    e.damp = -st.dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
+}
+
+// Rotation of a sphere (or of any body with exactAsphericalRot off): the new spin from the torque on
+// the free rotations, damped as the translation; the orientation is turned by turnSpheres. A still
+// body (no spin, no torque) keeps angAccel = 0 (skipped: most bodies before their first contact).
+static inline void rotateSphere(const IntegratorStep& st, long id, Real mass, const Vector3r& inertia, int blocked, bool damped, bool still,
+        const Vector3r& gFree, const Vector3r& vel, const Vector3r& accel, const Vector3r& undamped, Vector3r& angVel, BodyEnergy& e) {
+    Vector3r angAccel = still ? Vector3r::Zero() : accelOf(st.T[id], inertia, blocked, 3);
+    const Vector3r angUndamped = angAccel;
+    if (damped && !still) NewtonIntegrator::damp(angAccel, angVel, st.dt, st.lambda); // the same for rotations
+    if (st.energy) energyOfSphere(st, mass, inertia, gFree, vel, accel, undamped, angVel, angAccel, angUndamped, e);
+    angVel += st.dt * angAccel;
+}
+
+// Unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2), the
+// state being the angular momentum State.angMom (global frame), as in the reference: the spin is
+// found from it (a spin set alone is overwritten), and it is kept up to date after the turn.
+static inline bool isAspherical(const IntegratorStep& st, const Vector3r& inertia, int blocked) {
+    return __builtin_expect(unequalMoments(inertia), 0) && st.aspherical && !(blocked & allRotations) && (inertia.array() > 0).all();
+}
+
+static inline void spinFromMomentum(const IntegratorStep& st, long id, const Vector3r& inertia, Vector3r& angVel, AsphericalUpdate& a) {
+    a.angMom = &(*st.scene).bodies[id]->state->angMom;
+    const Quaternionr& q = st.h.ori[id];
+    angVel = q * (q.conjugate() * *a.angMom).cwiseQuotient(inertia);
+}
+
+static inline void rotateAspherical(const IntegratorStep& st, long id, Real mass, const Vector3r& inertia, bool damped, const Vector3r& gFree,
+        const Vector3r& vel, const Vector3r& accel, const Vector3r& undamped, Vector3r& angVel, BodyEnergy& e, AsphericalUpdate& a) {
+    const AsphericalTurn t = turnAspherical(st.h.ori[id], angVel, st.T[id], inertia, st.dt, damped ? st.lambda : 0);
+    a.ori = t.ori;
+    a.turned = true;
+    // the momentum of the new (mid-step) spin at the new orientation: the next step finds that spin
+    // from it again (so a run goes as when the spin itself was the state: second order in dt)
+    a.newAngMom = t.ori * inertia.cwiseProduct(t.ori.conjugate() * t.angVel);
+    if (!std::isfinite(a.ori.coeffs().sum())) e.kinRot = NaN; // (caught by the guard)
+    if (st.energy) energyOfAspherical(st, mass, gFree, vel, accel, undamped, t, e);
+    angVel = t.angVel;
+}
+
+// A dynamic body's new velocity and spin (and an aspherical body's orientation) with its energy terms.
+static inline void accelerate(const IntegratorStep& st, long id, int blocked, Real mass, const Vector3r& inertia, Vector3r& vel, Vector3r& angVel,
+        BodyEnergy& e, AsphericalUpdate& a) {
+    const bool damped = st.lambda != 0 && st.h.isDamped[id];
+    const Vector3r gFree = freeGravity(st.g, blocked);
+    Vector3r undamped;
+    const Vector3r accel = linearAccel(st, st.F[id], mass, blocked, damped, vel, gFree, undamped);
+    const bool asphericalBody = isAspherical(st, inertia, blocked);
+    if (__builtin_expect(asphericalBody, 0)) spinFromMomentum(st, id, inertia, angVel, a);
+    const bool still = (angVel.array() == 0).all() && (st.T[id].array() == 0).all() && (inertia.array() > 0).all();
+    if (asphericalBody && !still)
+        rotateAspherical(st, id, mass, inertia, damped, gFree, vel, accel, undamped, angVel, e, a);
+    else
+        rotateSphere(st, id, mass, inertia, blocked, damped, still, gFree, vel, accel, undamped, angVel, e);
+    vel += st.dt * accel;
+}
+
+// The stability guard: whether the new state is finite and the orientation a non-zero quaternion (an
+// ori written into a view or an array is checked here: NaN or zero). The terms are summed as a tree,
+// not one after the other: the branch waits for the sum, and a chain of twelve additions held every
+// body's update back. (|angVel|² is finite where the turn's angle |angVel|·dt is.)
+static inline bool finiteState(const Vector3r& pos, const Vector3r& vel, const Vector3r& angVel, const BodyEnergy& e, const Quaternionr& ori) {
+    const Real spin2 = angVel.squaredNorm(), oriNorm2 = ori.coeffs().squaredNorm();
+    const Real energies = (e.kin + e.kinRot) + (e.damp + e.grav);
+    return std::isfinite(((pos[0] + pos[1]) + (pos[2] + vel[0])) + ((vel[1] + vel[2]) + (spin2 + oriNorm2)) + energies) && oriNorm2 > 0;
+}
+
+// One body's step: its new state, the guard, then its entries written (false: not finite, the last
+// state kept). Holes and bodies outside the mask are not moved. Its position goes to the mirror,
+// st.spins[id] says whether turnSpheres turns it; its energy terms are added to sum (any: some
+// were) and its squared velocity to maxV2.
+static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& sum, bool& any, Real& maxV2) {
+    const BodyStore::Columns& h = st.h;
+    st.spins[id] = false;
+    if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
+        st.mir[id] = Vector3r::Constant(NaN);
+        return true;
+    }
+    Vector3r& statePos = h.pos[id];
+    st.mir[id] = statePos; // replaced below by the new position
+    if (st.moveMask != -1 && !(h.mask[id] & st.moveMask)) return true; // bodies outside the mask are not moved
+    const int blocked = h.blockedDOFsMask[id];
+    const bool dynamic = blocked != State::DOF_ALL;
+    Vector3r vel = h.vel[id], angVel = h.angVel[id];
+    BodyEnergy e; // (added once the new state is known finite)
+    AsphericalUpdate a;
+    if (dynamic) accelerate(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a);
+    const Vector3r pos = statePos + vel * st.dt;
+    if (!finiteState(pos, vel, angVel, e, h.ori[id])) return false;
+    h.vel[id] = vel;
+    h.angVel[id] = angVel;
+    if (a.angMom) *a.angMom = a.newAngMom; // (zero for a still body)
+    statePos = pos;
+    st.mir[id] = pos;
+    if (st.energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk
+        sum.grav += e.grav;
+        sum.kin += e.kin;
+        sum.kinRot += e.kinRot;
+        sum.damp += e.damp;
+        any = true;
+    }
+    maxV2 = std::max(maxV2, vel.squaredNorm());
+    if (__builtin_expect(a.turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
+        h.ori[id] = a.ori.normalized();
+    else // (turned by turnSpheres: 1, or 2 for a body whose rotations are all blocked: it turns only as an engine prescribes)
+        st.spins[id] = (blocked & allRotations) == allRotations ? 2 : 1;
+    return true;
+}
+
+// The skin's displacement (doc/performance.md, "The skin of the fast path"): the largest squared
+// distance of bodies b0 .. b1-1 from their reference positions, into m (just written: in cache;
+// holes: NaN, ignored).
+static inline void maxMovedSince(const IntegratorStep& st, long b0, long b1, Real& m) {
+    for (long id = b0; id < b1; ++id) m = std::max(m, (st.mir[id] - st.reference[id]).squaredNorm());
+}
+
+// Bodies lo .. hi-1, their energy terms into sums (each body's new state does not depend on the
+// thread that computes it), a block of bodies at a time: the second loop (turnSpheres) finds their
+// spins and orientations in cache.
+void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long hi, EnergySums& sums, Extremes& x) {
+    const IntegratorStep st = step; // (in registers: see IntegratorStep)
+    BodyEnergy sum{sums.grav, sums.kin, sums.kinRot, sums.damp};
+    bool any = sums.any;
+    Real maxV2 = x.maxV2, maxMoved2 = x.maxMoved2;
+    long diverged = x.diverged;
+    for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
+        const long b1 = std::min(hi, b0 + chunkBodies);
+        for (long id = b0; id < b1; ++id)
+            if (!integrateBody(st, id, sum, any, maxV2)) diverged = std::max(diverged, id);
+        turnSpheres(st.h, st.spins, b0, b1, st.dt);
+        if (st.reference) maxMovedSince(st, b0, b1, maxMoved2);
+    }
+    sums.grav = sum.grav;
+    sums.kin = sum.kin;
+    sums.kinRot = sum.kinRot;
+    sums.damp = sum.damp;
+    sums.any = any;
+    x.maxV2 = maxV2;
+    x.maxMoved2 = maxMoved2;
+    x.diverged = diverged;
+}
+
+// The calling thread's share: the bodies of its range (the same split as O.forces and
+// InteractionLoop). With several threads, a thread that is done helps with the others' last bodies
+// (on shared machines a core is often slower than the other for a while): its own chunks from the
+// front, then the others' last ones (ChunkQueue.hpp), the energy terms per chunk (summed in order
+// by addChunkEnergies). The queues were filled before the parallel region (prepareStealing): a
+// thread that starts late (its core busy with another process) finds its chunks taken, and no
+// thread waits for another to start.
+void NewtonIntegrator::integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x) {
+    EnergySums mySums; // this thread's energy terms (without work stealing)
+    const int team = omp_get_num_threads();
+    if (threads == 1 || team != threads) { // (fewer threads came: each its range, the chunks' sums left at zero)
+        const auto range = myThreadRange(n);
+        integrateRange(st, range.first, range.second, mySums, x);
+    } else {
+        const int me = omp_get_thread_num();
+        for (int k = 0; k < team; ++k) { // own chunks from the front, then the others' from the back
+            const int t = (me + k) % team;
+            ChunkQueue& q = *queues[t];
+            const auto r = threadRange(n, t, team);
+            unsigned c;
+            while (t == me ? q.takeFront(c) : q.takeBack(c))
+                integrateRange(st, r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies), chunkSums[t][c], x);
+        }
+    }
+    if (mySums.any) addEnergy(*st.scene, mySums, ids);
+}
+
+// Before the parallel region: each thread's range cut into chunks, all published.
+void NewtonIntegrator::prepareStealing(int threads, long n) {
+    while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
+    chunkSums.resize(threads);
+    for (int t = 0; t < threads; ++t) {
+        const auto r = threadRange(n, t, threads);
+        const unsigned chunks = (unsigned)((r.second - r.first + chunkBodies - 1) / chunkBodies);
+        chunkSums[t].assign(chunks, EnergySums());
+        queues[t]->reset(chunks);
+    }
+}
+
+// With work stealing: the energy terms per range, chunk by chunk in order: the same sums whoever computed each chunk.
+void NewtonIntegrator::addChunkEnergies(Scene& s, int threads, const EnergyTerms& ids) const {
+    for (int t = 0; t < threads; ++t) {
+        EnergySums range;
+        for (const EnergySums& e : chunkSums[t]) {
+            range.grav += e.grav;
+            range.kin += e.kin;
+            range.kinRot += e.kinRot;
+            range.damp += e.damp;
+            range.any |= e.any;
+        }
+        if (range.any) addEnergy(s, range, ids);
+    }
+}
+
 void NewtonIntegrator::addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const {
     s.energy.add(id.grav, e.grav); // (a term appears once something was added to it, as in Yade)
     s.energy.add(id.kin, e.kin);
@@ -138,241 +403,112 @@ void NewtonIntegrator::addEnergy(Scene& s, const EnergySums& e, const EnergyTerm
     if (damping != 0) s.energy.add(id.damp, e.damp);
 }
 
-void NewtonIntegrator::action() {
-    Scene& s = *scene;
-    const Real dt = s.dt;
-    const long n = (long)s.bodies.size();
-    s.forces.sync(); // (the remote contributions of the threads: few)
+// The totals of the forces (the threads' few remote contributions added), and the warning when
+// no ForceResetter ran in this step.
+void NewtonIntegrator::gatherForces(Scene& s) {
+    s.forces.sync();
     if (warnNoForceReset && s.forces.lastReset != s.iter && warnedNoReset != s.iter - 1) // (once for a run of such steps)
         logWarning("NewtonIntegrator: O.forces last reset in step " + std::to_string(s.forces.lastReset) + ", while the current step is "
                 + std::to_string(s.iter) + ". Did you forget to include ForceResetter in O.engines? (NewtonIntegrator.warnNoForceReset=False silences this)");
     if (s.forces.lastReset != s.iter) warnedNoReset = s.iter;
-    const bool energy = s.trackEnergy;
-    const bool split = energy && kinSplit;
+}
+
+NewtonIntegrator::EnergyTerms NewtonIntegrator::energyTerms(Scene& s) const {
     EnergyTerms ids;
-    if (energy) {
-        ids.kin = s.energy.term(split ? "kinTrans" : "kinetic", false);
-        if (split) ids.kinRot = s.energy.term("kinRot", false);
-        ids.grav = s.energy.term("gravWork", true);
-        ids.damp = s.energy.term("nonviscDamp", true);
-    }
-    // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
-    // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
-    CriticalStep crit;
-    const bool full = stabilityCheckPeriod > 0 && (s.iter % stabilityCheckPeriod == 0 || dt != lastCheckedDt);
-    const std::vector<Body::id_t>& fresh = s.newContactBodies;
-    const bool checkFresh = stabilityCheckPeriod > 0 && !full && !fresh.empty();
-    if (stabilityCheckPeriod > 0) lastCheckedDt = dt;
-    if (full) crit = criticalTimeStep(s, true);
-    // the members as constants, so that the compiler keeps them in registers across the stores below
-    const Vector3r* forces = s.forces.forceData();
-    const Vector3r* torques = s.forces.torqueData();
-    const Vector3r g = gravity;
-    const Real lambda = damping;
-    const bool gravityDamped = dampGravity;
-    const bool aspherical = exactAsphericalRot;
-    const int moveMask = mask;
-    Real maxV2 = 0;
-    long diverged = -1; // a body whose new state is not finite (not written)
-    const long long writesBefore = externalWrites();
-    const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
-    const BodyStore::Columns hot = s.bodies.hot().columns();
+    if (!s.trackEnergy) return ids;
+    const bool split = kinSplit;
+    ids.kin = s.energy.term(split ? "kinTrans" : "kinetic", false);
+    if (split) ids.kinRot = s.energy.term("kinRot", false);
+    ids.grav = s.energy.term("gravWork", true);
+    ids.damp = s.energy.term("nonviscDamp", true);
+    return ids;
+}
+
+// The step's constants, and the position mirror and spin flags sized to the bodies.
+IntegratorStep NewtonIntegrator::prepareStep(Scene& s) {
+    const long n = (long)s.bodies.size();
     std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
     mirror.resize(n);
     spinning.resize(n);
     const auto& ref = s.positionMirror.reference;
-    const Vector3r* reference = ref && (long)ref->size() == n ? ref->data() : nullptr;
-    Real maxMoved2 = 0;
-    // With several threads a thread that is done helps with the others' last bodies (on shared
-    // machines a core is often slower than the other for a while); the energy terms are then
-    // summed per chunk, and the chunks in order after the loop.
-    const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
-    const bool steal = threads > 1;
-    if (steal) {
-        while ((int)queues.size() < threads) queues.emplace_back(new ChunkQueue);
-        for (auto& q : queues) q->unpublish();
-        chunkSums.resize(threads);
-        for (auto& sums : chunkSums) sums.clear(); // (a thread that does not come leaves its range's empty)
-    }
-#pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2)
-    {
-    const auto range = myThreadRange(n); // the bodies of this thread (the same split as O.forces and InteractionLoop)
-    const long begin = range.first, end = range.second;
-    if (checkFresh) {
-        CriticalStep mine;
+    IntegratorStep st;
+    st.scene = &s;
+    st.dt = s.dt;
+    st.lambda = damping;
+    st.g = gravity;
+    st.gravityDamped = dampGravity;
+    st.aspherical = exactAsphericalRot;
+    st.energy = s.trackEnergy;
+    st.split = st.energy && kinSplit;
+    st.moveMask = mask;
+    st.h = s.bodies.hot().columns();
+    st.mir = mirror.data();
+    st.F = s.forces.forceData();
+    st.T = s.forces.torqueData();
+    st.spins = spinning.data();
+    st.reference = ref && (long)ref->size() == n ? ref->data() : nullptr;
+    return st;
+}
+
+// Inside the parallel region: the critical step of the bodies that got a new contact in this step
+// (any split between the threads: ties go to the smaller id), into crit.
+static void checkFreshContacts(const Scene& s, const std::vector<Body::id_t>& fresh, CriticalStep& crit) {
+    CriticalStep mine;
 #pragma omp for schedule(dynamic, 16) nowait
-        for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine); // (any split: ties go to the smaller id)
+    for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine);
 #pragma omp critical(yadeCriticalStep)
-        if (mine.before(crit)) crit = mine;
+    if (mine.before(crit)) crit = mine;
 #pragma omp barrier
-    }
-    EnergySums mySums; // this thread's energy terms (without work stealing)
-    // bodies lo .. hi-1, energy terms into e (each body's new state does not depend on the thread that computes it)
-    auto integrate = [&](long lo, long hi, EnergySums& e) {
-    // (the columns in locals: through the captured references, every bool or char store made the
-    // compiler reload each base pointer)
-    const BodyStore::Columns h = hot;
-    Vector3r* const mir = mirror.data();
-    const Vector3r* const F = forces;
-    const Vector3r* const T = torques;
-    char* const spins = spinning.data();
-    // (a block of bodies at a time: the second loop finds their spins and orientations in cache)
-    for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
-        const long b1 = std::min(hi, b0 + chunkBodies);
-        for (long id = b0; id < b1; ++id) {
-            spins[id] = false;
-            if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
-                mir[id] = Vector3r::Constant(NaN);
-                continue;
-            }
-            Vector3r& statePos = h.pos[id];
-            mir[id] = statePos; // replaced below by the new position
-            if (moveMask != -1 && !(h.mask[id] & moveMask)) continue; // bodies outside the mask are not moved
-            const int blocked = h.blockedDOFsMask[id];
-            const Real mass = h.mass[id];
-            const Vector3r& inertia = h.inertia[id];
-            const bool dynamic = blocked != State::DOF_ALL;
-            Vector3r vel = h.vel[id], angVel = h.angVel[id];
-            Real eGrav = 0, eKin = 0, eKinRot = 0, eDamp = 0; // energy terms, added once the new state is known finite
-            Quaternionr newOri; // (an aspherical body's, when turned)
-            bool turned = false;
-            Vector3r* angMom = nullptr; // (an aspherical body's State.angMom, and its new value)
-            Vector3r newAngMom = Vector3r::Zero();
-            if (dynamic) {
-                const bool damped = lambda != 0 && h.isDamped[id];
-                Vector3r accel = accelOf(F[id], Vector3r::Constant(mass), blocked, 0);
-                const Vector3r gFree = freeGravity(g, blocked);
-                if (gravityDamped) accel += gFree;
-                const Vector3r undamped = accel;
-                if (damped) damp(accel, vel, dt, lambda);
-                if (!gravityDamped) accel += gFree;
-                // unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2), the
-                // state being the angular momentum State.angMom (global frame), as in the reference: the spin is
-                // found from it (a spin set alone is overwritten), and it is kept up to date after the turn
-                const bool asphericalBody = __builtin_expect(unequalMoments(inertia), 0) && aspherical
-                        && !(blocked & (State::DOF_RX | State::DOF_RY | State::DOF_RZ)) && (inertia.array() > 0).all();
-                if (__builtin_expect(asphericalBody, 0)) {
-                    angMom = &s.bodies[id]->state->angMom;
-                    const Quaternionr& q = h.ori[id];
-                    angVel = q * (q.conjugate() * *angMom).cwiseQuotient(inertia);
-                }
-                // a body that neither spins nor feels a torque keeps angAccel = 0 (skipped: most bodies before their first contact)
-                const bool still = (angVel.array() == 0).all() && (T[id].array() == 0).all() && (inertia.array() > 0).all();
-                if (asphericalBody && !still) {
-                    const AsphericalTurn t = turnAspherical(h.ori[id], angVel, T[id], inertia, dt, damped ? lambda : 0);
-                    newOri = t.ori;
-                    turned = true;
-                    // the momentum of the new (mid-step) spin at the new orientation: the next step finds that spin
-                    // from it again (so a run goes as when the spin itself was the state: second order in dt)
-                    newAngMom = t.ori * inertia.cwiseProduct(t.ori.conjugate() * t.angVel);
-                    if (!std::isfinite(newOri.coeffs().sum())) eKinRot = NaN; // (caught by the guard below)
-                    if (energy) {
-                        const Vector3r v = vel + 0.5 * dt * accel;
-                        eGrav = -mass * gFree.dot(vel) * dt;
-                        const Real trans = 0.5 * mass * v.squaredNorm();
-                        if (split) {
-                            eKin = trans;
-                            eKinRot = t.kinetic;
-                        } else
-                            eKin = trans + t.kinetic;
-                        eDamp = -dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
-                    }
-                    vel += dt * accel;
-                    angVel = t.angVel;
-                } else {
-                    Vector3r angAccel = still ? Vector3r::Zero() : accelOf(T[id], inertia, blocked, 3);
-                    const Vector3r angUndamped = angAccel;
-                    if (damped && !still) damp(angAccel, angVel, dt, lambda); // the same for rotations
-                    if (energy) { // (on-step velocities v_n = v_{n-1/2} + a·dt/2, consistent with positions x_n)
-                        const Vector3r v = vel + 0.5 * dt * accel, w = angVel + 0.5 * dt * angAccel;
-                        eGrav = -mass * gFree.dot(vel) * dt; // the move x_{n-1} -> x_n
-                        if (split) {
-                            eKin = 0.5 * mass * v.squaredNorm();
-                            eKinRot = 0.5 * w.dot(inertia.cwiseProduct(w));
-                        } else
-                            eKin = 0.5 * mass * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w));
-                        eDamp = -dt * (mass * (accel - undamped).dot(v) + (angAccel - angUndamped).dot(inertia.cwiseProduct(w)));
-                    }
-                    vel += dt * accel;
-                    angVel += dt * angAccel;
-                }
-            }
-            const Vector3r pos = statePos + vel * dt;
-            const Real spin2 = angVel.squaredNorm(); // (finite where the turn's angle |angVel|·dt is)
-            const Real oriNorm2 = h.ori[id].coeffs().squaredNorm(); // (an ori written into a view or an array is checked here: NaN or zero)
-            // stability guard: keep the last finite state (the terms summed as a tree, not one after the other: the
-            // branch waits for the sum, and a chain of twelve additions held every body's update back)
-            const Real energies = (eKin + eKinRot) + (eDamp + eGrav);
-            if (!std::isfinite(((pos[0] + pos[1]) + (pos[2] + vel[0])) + ((vel[1] + vel[2]) + (spin2 + oriNorm2)) + energies) || !(oriNorm2 > 0)) {
-#pragma omp critical(yadeDiverged)
-                diverged = std::max(diverged, id);
-                continue;
-            }
-            h.vel[id] = vel;
-            h.angVel[id] = angVel;
-            if (angMom) *angMom = newAngMom; // (zero for a still body)
-            statePos = pos;
-            mir[id] = pos;
-            if (energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk (below)
-                e.grav += eGrav;
-                e.kin += eKin;
-                e.kinRot += eKinRot;
-                e.damp += eDamp;
-                e.any = true;
-            }
-            maxV2 = std::max(maxV2, vel.squaredNorm());
-            if (__builtin_expect(turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
-                h.ori[id] = newOri.normalized();
-            else // (turned below: 1, or 2 for a body whose rotations are all blocked: it turns only as an engine prescribes)
-                spins[id] = (blocked & allRotations) == allRotations ? 2 : 1;
-        }
-        turnSpheres(h, spins, b0, b1, dt);
-        if (reference) // (the bodies just written: in cache; holes: NaN, ignored)
-            for (long id = b0; id < b1; ++id) maxMoved2 = std::max(maxMoved2, (mir[id] - reference[id]).squaredNorm());
-    }
-    };
-    if (!(dt > crit.dt)) { // (the same answer in every thread)
-        ChunkQueue* myQueue = steal ? queues[omp_get_thread_num()].get() : nullptr;
-        if (!myQueue) integrate(begin, end, mySums);
-        else { // own chunks from the front, then the others' last ones (ChunkQueue.hpp); energy per chunk
-            const unsigned chunks = (unsigned)((end - begin + chunkBodies - 1) / chunkBodies);
-            chunkSums[omp_get_thread_num()].assign(chunks, EnergySums());
-            myQueue->reset(chunks);
-            unsigned c;
-            while (myQueue->takeFront(c))
-                integrate(begin + (long)c * chunkBodies, std::min(end, begin + ((long)c + 1) * chunkBodies), chunkSums[omp_get_thread_num()][c]);
-            const int team = omp_get_num_threads();
-            for (int other = 0; other < team; ++other) {
-                ChunkQueue& q = *queues[other];
-                if (&q == myQueue) continue;
-                while (!q.published()) std::this_thread::yield();
-                const auto r = threadRange(n, other, team);
-                while (q.takeBack(c)) integrate(r.first + (long)c * chunkBodies, std::min(r.second, r.first + ((long)c + 1) * chunkBodies), chunkSums[other][c]);
-            }
-        }
-    }
-    if (mySums.any) addEnergy(s, mySums, ids);
-    }
-    if (steal && energy) { // per range, chunk by chunk in order: the same sums whoever computed each chunk
-        for (int t = 0; t < threads; ++t) {
-            EnergySums range;
-            for (const EnergySums& e : chunkSums[t]) {
-                range.grav += e.grav;
-                range.kin += e.kin;
-                range.kinRot += e.kinRot;
-                range.damp += e.damp;
-                range.any |= e.any;
-            }
-            if (range.any) addEnergy(s, range, ids);
-        }
-    }
-    if (dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
+}
+
+// What the collider and the interaction loop read after this step: the positions, when and from
+// what they were written, and how far the bodies moved (a bound, and the skin's displacement).
+void NewtonIntegrator::publishPositions(Scene& s, const IntegratorStep& st, bool continues, long long writesBefore, const Extremes& x) {
     s.positionMirror.iter = s.iter;
     s.positionMirror.writes = writesBefore;
     s.positionMirror.changes = s.bodies.changes;
-    s.positionMirror.maxStep = continues ? std::sqrt(maxV2) * dt : Inf; // (pos + vel·dt: each body moved |vel|·dt)
-    s.positionMirror.maxMoved2 = maxMoved2;
-    s.positionMirror.maxMovedTag = reference ? s.positionMirror.referenceTag : -1;
+    s.positionMirror.maxStep = continues ? std::sqrt(x.maxV2) * st.dt : Inf; // (pos + vel·dt: each body moved |vel|·dt)
+    s.positionMirror.maxMoved2 = x.maxMoved2;
+    s.positionMirror.maxMovedTag = st.reference ? s.positionMirror.referenceTag : -1;
+}
+
+void NewtonIntegrator::action() {
+    Scene& s = *scene;
+    gatherForces(s);
+    const EnergyTerms ids = energyTerms(s);
+    // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
+    // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
+    CriticalStep crit;
+    const bool full = stabilityCheckPeriod > 0 && (s.iter % stabilityCheckPeriod == 0 || s.dt != lastCheckedDt);
+    const std::vector<Body::id_t>& fresh = s.newContactBodies;
+    const bool checkFresh = stabilityCheckPeriod > 0 && !full && !fresh.empty();
+    if (stabilityCheckPeriod > 0) lastCheckedDt = s.dt;
+    if (full) crit = criticalTimeStep(s, true);
+    const long long writesBefore = externalWrites();
+    const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
+    const IntegratorStep st = prepareStep(s);
+    const long n = (long)s.bodies.size();
+    const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
+    const bool steal = threads > 1;
+    if (steal) prepareStealing(threads, n);
+    Real maxV2 = 0, maxMoved2 = 0;
+    long diverged = -1;
+#pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2, diverged)
+    {
+        if (checkFresh) checkFreshContacts(s, fresh, crit);
+        Extremes mine;
+        if (!(st.dt > crit.dt)) integrateShare(st, n, threads, ids, mine); // (the same answer in every thread)
+        maxV2 = std::max(maxV2, mine.maxV2);
+        maxMoved2 = std::max(maxMoved2, mine.maxMoved2);
+        diverged = std::max(diverged, mine.diverged);
+    }
+    if (steal && st.energy) addChunkEnergies(s, threads, ids);
+    if (st.dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
+    Extremes all;
+    all.maxV2 = maxV2;
+    all.maxMoved2 = maxMoved2;
+    all.diverged = diverged;
+    publishPositions(s, st, continues, writesBefore, all);
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));
 }
@@ -383,12 +519,14 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
     os.precision(3);
     os << "Simulation unstable at step " << s.iter << ", body #" << id << ": " << what << ". Likely cause: ";
     Real maxOverlap = 0;
-    const ViscElPhys* rolling = nullptr; // a contact with rolling resistance (its torque grows with the relative spin)
+    std::string spin; // what in its contacts can make its spin explode (IPhys::diagnoseSpin; of the last such contact)
     for (const auto& partner : s.interactions.partnersOf(id)) {
         if (const auto* g = dynamic_cast<const ScGeom*>(s.interactions.geom(partner.k)))
             maxOverlap = std::max(maxOverlap, g->penetrationDepth / std::max(std::min(g->refR1 > 0 ? g->refR1 : g->refR2, g->refR2), Real(1e-300)));
-        if (const auto* p = dynamic_cast<const ViscElPhys*>(s.interactions.phys(partner.k)))
-            if (p->mR > 0) rolling = p;
+        if (const IPhys* p = s.interactions.phys(partner.k)) {
+            std::string why = p->diagnoseSpin();
+            if (!why.empty()) spin = std::move(why);
+        }
     }
     const BodyHot state = s.bodies.hot().get((size_t)id);
     const int xyz = State::DOF_X | State::DOF_Y | State::DOF_Z;
@@ -401,11 +539,8 @@ std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std:
            << ") or a GlobalStiffnessTimeStepper";
     else if (maxOverlap > 0.5)
         os << "an overlap of " << 100 * maxOverlap << "% of the radius: the bodies were placed overlapping or the loading is too fast";
-    else if (rolling)
-        os << "the rolling resistance of its contacts (ViscElPhys.mR=" << rolling->mR << ", mRtype=" << rolling->mRtype
-           << "): its torque is mR·|Fn| times the relative spin (mRtype 2: also times the spin's speed at the contact), "
-           << "stable only while O.dt·mR·|Fn| (mRtype 2: ·|Δ(ω×arm)|) stays below about twice the body's moment of inertia; "
-           << "use a smaller O.dt or mR";
+    else if (!spin.empty())
+        os << spin;
     else
         os << "none of the usual ones (time step below the critical " << crit.dt
            << ", overlaps moderate): check forces added from Python and prescribed velocities";

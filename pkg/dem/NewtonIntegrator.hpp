@@ -12,6 +12,7 @@
 namespace yade {
 
 class Scene;
+struct IntegratorStep; // the constants and columns of one step (NewtonIntegrator.cpp)
 
 // Raised when the integrator finds a diverging state; the message names the body, the step and the cause.
 struct StabilityError : std::runtime_error {
@@ -57,21 +58,43 @@ private:
     struct EnergyTerms {
         int grav = -1, kin = -1, kinRot = -1, damp = -1;
     };
-    void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
+    // What a thread found over its bodies: combined over the threads after the parallel part.
+    struct Extremes {
+        Real maxV2 = 0;     // the largest squared velocity
+        Real maxMoved2 = 0; // the largest squared distance from the skin's reference positions
+        long diverged = -1; // the largest id of a body whose new state is not finite (not written)
+    };
     long long warnedNoReset = -2; // the step of the last missing-ForceResetter warning
+    // The stages of a step, in order (NewtonIntegrator.cpp):
+    void gatherForces(Scene& s);
+    EnergyTerms energyTerms(Scene& s) const;
+    IntegratorStep prepareStep(Scene& s);
+    void prepareStealing(int threads, long n);
+    void integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x);
+    void integrateRange(const IntegratorStep& st, long lo, long hi, EnergySums& e, Extremes& x);
+    void addChunkEnergies(Scene& s, int threads, const EnergyTerms& ids) const;
+    void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
+    void publishPositions(Scene& s, const IntegratorStep& st, bool continues, long long writesBefore, const Extremes& x);
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
 public:
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
     // when it increases the on-step velocity estimate, increased when it decreases it. The sign is
     // computed without branches (its value is random for bodies in contact: branches mispredict).
-    // Component by component in registers: a loop writing the vector in memory made the next
-    // vector read wait for the stores.
+    // The x and y components as one pair (a vector of two lanes, the same arithmetic lane by lane):
+    // the result is then stored in one piece where the compiler keeps it in memory; stored as two
+    // scalars and read back as a pair (as the velocity update reads it), the read waits until the
+    // stores are written to the cache (a failed store forwarding: 15 % of the integrator's time).
     static void damp(Vector3r& accel, const Vector3r& vel, Real dt, Real lambda) {
-        const auto one = [dt, lambda](Real a, Real v) {
-            const Real p = a * (v + 0.5 * dt * a);
-            return a * (1 - lambda * Real(int(p > 0) - int(p < 0)));
-        };
-        accel = Vector3r(one(accel[0], vel[0]), one(accel[1], vel[1]), one(accel[2], vel[2]));
+        typedef Real Pair __attribute__((vector_size(2 * sizeof(Real))));
+        typedef long long PairMask __attribute__((vector_size(2 * sizeof(Real))));
+        static_assert(sizeof(Real) == sizeof(long long), "the sign's lanes as integers of the size of Real");
+        const Pair a = {accel[0], accel[1]}, v = {vel[0], vel[1]};
+        const Pair p = a * (v + 0.5 * dt * a);
+        const PairMask s = (p < 0) - (p > 0); // (comparisons give -1 or 0 per lane; NaN: 0)
+        const Pair xy = a * (1 - lambda * __builtin_convertvector(s, Pair));
+        const Real pz = accel[2] * (vel[2] + 0.5 * dt * accel[2]);
+        const Real z = accel[2] * (1 - lambda * Real(int(pz > 0) - int(pz < 0)));
+        accel = Vector3r(xy[0], xy[1], z);
     }
 };
 

@@ -23,6 +23,8 @@ public:
         v.attr("mR", mR, "Rolling resistance coefficient");
         v.attr("mRtype", mRtype, "Rolling resistance type (ViscElMat.mRtype)");
     }
+    // The rolling resistance (mR > 0): its torque grows with the relative spin.
+    std::string diagnoseSpin() const override;
     YADE_INDEXABLE(ViscElPhys)
 };
 
