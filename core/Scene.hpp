@@ -5,7 +5,7 @@
 #include <core/Engine.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/InteractionContainer.hpp>
-#include <lib/base/ExternalWrites.hpp>
+#include <core/PositionMirror.hpp>
 #include <map>
 #include <mutex>
 
@@ -35,29 +35,9 @@ public:
     // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
     // the integrator's stability guard), cleared at the start of each step.
     std::vector<Body::id_t> newContactBodies;
-    // Positions of all bodies as NewtonIntegrator left them, contiguous by id (NaN for holes), so
-    // that the collider and the interaction loop need not follow Body -> State pointers. Usable
-    // while positionsCurrent(). An engine other than the integrator that moves bodies must call
-    // positionsChanged(); writes from Python are noticed through externalWrites().
-    // maxStep bounds how far any body moved in the step that wrote pos, from the positions of the
-    // mirror before it (the fastest body's |v|·dt; Inf when the step did not start from them).
-    // With `reference` (positions of an earlier step, tagged by the engine that set them: the
-    // interaction loop's skin) the integrator also finds, with pos, the largest squared distance
-    // of a body from them (maxMoved2, for the tag maxMovedTag): no separate pass and no wait.
-    struct PositionMirror {
-        std::vector<Vector3r> pos;
-        long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
-        Real maxStep = Inf;
-        std::shared_ptr<const std::vector<Vector3r>> reference;
-        long long referenceTag = -1, maxMovedTag = -1;
-        Real maxMoved2 = NaN;
-    } positionMirror;
-    bool positionsCurrent() const {
-        const PositionMirror& m = positionMirror;
-        return m.changes == bodies.changes && m.pos.size() == bodies.size() && (m.iter == iter || m.iter + 1 == iter)
-                && m.writes == externalWrites() && bodies.hot().writableViews == 0;
-    }
-    void positionsChanged() { positionMirror.iter = -1; }
+    // The skin protocol: every body's position as the integrator left it, for the collider and the
+    // interaction loop (who writes, who reads, what invalidates it: core/PositionMirror.hpp).
+    PositionMirror positionMirror{*this};
 
     Scene();
     // O drops this scene (O.reset(), O.load()): the NumPy views of its bodies and contacts, which

@@ -12,15 +12,15 @@ bool InsertionSortCollider::needsRun() {
     const Real limit2 = sweep * sweep;
     const long n = (long)bodies.size();
     int moved = 0;
-    if (scene->positionsCurrent() && boxes.size() == bodies.size()) { // contiguous: the integrator's positions, our boxes
-        const Scene::PositionMirror& m = scene->positionMirror;
+    const PositionMirror& m = scene->positionMirror; // (the skin protocol: core/PositionMirror.hpp)
+    if (m.current() && boxes.size() == bodies.size()) { // contiguous: the integrator's positions, our boxes
         // no body moved farther than the sum of the fastest body's steps since the bounds were made
         // (each step with the rounding of pos + vel·dt): below the sweep, nothing to check
-        if (m.iter == travelledTo + 1) travelled += m.maxStep * (1 + 1e-12) + 1e-15 * (scale + sweep);
-        else if (m.iter != travelledTo) travelled = Inf;
-        travelledTo = m.iter;
+        if (m.step() == travelledTo + 1) travelled += m.maxStep() * (1 + 1e-12) + 1e-15 * (scale + sweep);
+        else if (m.step() != travelledTo) travelled = Inf;
+        travelledTo = m.step();
         if (travelled < sweep * (1 - 1e-9)) return false;
-        const Vector3r* pos = m.pos.data();
+        const Vector3r* pos = m.positions();
 #pragma omp parallel for schedule(static) reduction(| : moved)
         for (long id = 0; id < n; ++id) moved |= boxes[id].collidable && (pos[id] - boxes[id].refPos).squaredNorm() > limit2; // (3.1.6)
         return moved != 0;
@@ -49,7 +49,7 @@ void InsertionSortCollider::updateBounds() {
     }
     scale = extent;
     travelled = 0; // the bounds start from the positions now, those of the last step's integrator if current
-    travelledTo = scene->positionsCurrent() ? scene->positionMirror.iter : scene->iter - 1;
+    travelledTo = scene->positionMirror.current() ? scene->positionMirror.step() : scene->iter - 1;
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     // the first rebuild turns a relative verletDist into the distance it gave, as the reference does (-0.5 with
     // a smallest radius of 0.3 reads 0.15 after the first step); a relative value set later stays relative

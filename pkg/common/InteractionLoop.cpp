@@ -1,4 +1,5 @@
 #include <core/Scene.hpp>
+#include <lib/base/ExternalWrites.hpp>
 #include <lib/base/ThreadRange.hpp>
 #include <lib/base/Logging.hpp>
 #include <pkg/common/InteractionLoop.hpp>
@@ -90,9 +91,9 @@ bool InteractionLoop::prepareQuickReject() {
     if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
     const long n = (long)bodies.size();
-    quickFromMirror = !cacheBuilt && scene->positionsCurrent();
+    quickFromMirror = !cacheBuilt && scene->positionMirror.current();
     if (quickFromMirror) { // shapes unchanged: the integrator's positions
-        shapePos = scene->positionMirror.pos.data();
+        shapePos = scene->positionMirror.positions();
         if (!quickPos.empty()) std::vector<Vector3r>().swap(quickPos); // (the usual case: not kept)
     } else { // from the bodies' records
         quickPos.resize(n);
@@ -151,8 +152,7 @@ void InteractionLoop::prepareSkin(bool quick) {
     // the integrator measures D from them too (a tag unique to this epoch of this loop)
     static std::atomic<long long> epochs{0};
     skin.tag = ++epochs;
-    scene->positionMirror.reference = skin.refPos;
-    scene->positionMirror.referenceTag = skin.tag;
+    scene->positionMirror.setReference(skin.refPos, skin.tag);
     Real scale = 0;
     for (size_t id = 0; id < n; ++id) {
         const Real extent = (*skin.refPos)[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
@@ -765,9 +765,9 @@ void InteractionLoop::runLoop() {
     // D² of the spheres, and of the facets
     Real displacement2 = 0;
     const Real facetDisplacement = skinRef ? facetDisplacement2() : 0;
-    const Scene::PositionMirror& mirror = s.positionMirror;
-    if (skinRef && quickFromMirror && mirror.maxMovedTag == skin.tag && mirror.referenceTag == skin.tag) { // found by the integrator with these positions
-        displacement2 = std::max(displacement2, mirror.maxMoved2);
+    const Real movedByIntegrator = skinRef && quickFromMirror ? s.positionMirror.maxMovedSince(skin.tag) : NaN;
+    if (!std::isnan(movedByIntegrator)) { // found by the integrator with these positions
+        displacement2 = std::max(displacement2, movedByIntegrator);
         skinRef = nullptr;
     }
     // Each thread's list is cut into chunks of the entries it tests. A thread does the chunks of

@@ -113,7 +113,7 @@ private:
     // make the pairs of spheres tested again. An epoch ends when the interactions, the bodies,
     // anything written from Python, the set of facets or the functors' reach change.
     struct Skin {
-        // each body's position at the start of the epoch (shared with Scene::positionMirror.reference)
+        // each body's position at the start of the epoch (the reference of Scene::positionMirror: PositionMirror::setReference)
         std::shared_ptr<const std::vector<Vector3r>> refPos = std::make_shared<std::vector<Vector3r>>();
         std::vector<std::vector<float>> gap; // per thread list, per entry: g - 2D (-Inf: test the pair), rounded down
         std::vector<std::vector<unsigned>> todo; // per thread list: the entries tested in this step
@@ -129,7 +129,7 @@ private:
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
         Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
         long long pairsBuild = -1;           // threadPairsBuild when the epoch began
-        long long tag = -1;                  // this epoch's Scene::PositionMirror::referenceTag
+        long long tag = -1;                  // this epoch's tag of the mirror's reference (PositionMirror::setReference)
         bool active = false;                 // used in this step
         bool fresh = false;                  // the epoch begins in this step (D = 0, every pair tested)
     } skin;

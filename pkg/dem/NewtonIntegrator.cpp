@@ -140,11 +140,11 @@ struct IntegratorStep {
     bool gravityDamped, aspherical, energy, split;
     int moveMask;
     BodyStore::Columns h;
-    Vector3r* mir;             // Scene::positionMirror: every body's position after this step
+    Vector3r* mir;             // PositionMirror::Write::pos: every body's position after this step
     const Vector3r* F;         // the force and torque totals
     const Vector3r* T;
     char* spins;               // NewtonIntegrator::spinning
-    const Vector3r* reference; // the skin's reference positions (Scene::PositionMirror), or null
+    const Vector3r* reference; // the skin's reference positions (PositionMirror::Write), or null
 };
 
 // A body's energy terms in a step, or their sums over bodies (kin: all the kinetic energy, or its
@@ -424,13 +424,10 @@ NewtonIntegrator::EnergyTerms NewtonIntegrator::energyTerms(Scene& s) const {
     return ids;
 }
 
-// The step's constants, and the position mirror and spin flags sized to the bodies.
-IntegratorStep NewtonIntegrator::prepareStep(Scene& s) {
-    const long n = (long)s.bodies.size();
-    std::vector<Vector3r>& mirror = s.positionMirror.pos; // every body's position after this step
-    mirror.resize(n);
-    spinning.resize(n);
-    const auto& ref = s.positionMirror.reference;
+// The step's constants, with the position mirror's arrays (PositionMirror::beginWrite), and the spin
+// flags sized to the bodies.
+IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const PositionMirror::Write& mirror) {
+    spinning.resize(s.bodies.size());
     IntegratorStep st;
     st.scene = &s;
     st.dt = s.dt;
@@ -442,11 +439,11 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s) {
     st.split = st.energy && kinSplit;
     st.moveMask = mask;
     st.h = s.bodies.hot().columns();
-    st.mir = mirror.data();
+    st.mir = mirror.pos;
     st.F = s.forces.forceData();
     st.T = s.forces.torqueData();
     st.spins = spinning.data();
-    st.reference = ref && (long)ref->size() == n ? ref->data() : nullptr;
+    st.reference = mirror.reference;
     return st;
 }
 
@@ -461,17 +458,6 @@ static void checkFreshContacts(const Scene& s, const std::vector<Body::id_t>& fr
 #pragma omp barrier
 }
 
-// What the collider and the interaction loop read after this step: the positions, when and from
-// what they were written, and how far the bodies moved (a bound, and the skin's displacement).
-void NewtonIntegrator::publishPositions(Scene& s, const IntegratorStep& st, bool continues, long long writesBefore, const Extremes& x) {
-    s.positionMirror.iter = s.iter;
-    s.positionMirror.writes = writesBefore;
-    s.positionMirror.changes = s.bodies.changes;
-    s.positionMirror.maxStep = continues ? std::sqrt(x.maxV2) * st.dt : Inf; // (pos + vel·dt: each body moved |vel|·dt)
-    s.positionMirror.maxMoved2 = x.maxMoved2;
-    s.positionMirror.maxMovedTag = st.reference ? s.positionMirror.referenceTag : -1;
-}
-
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     gatherForces(s);
@@ -484,10 +470,9 @@ void NewtonIntegrator::action() {
     const bool checkFresh = stabilityCheckPeriod > 0 && !full && !fresh.empty();
     if (stabilityCheckPeriod > 0) lastCheckedDt = s.dt;
     if (full) crit = criticalTimeStep(s, true);
-    const long long writesBefore = externalWrites();
-    const bool continues = s.positionsCurrent() && s.positionMirror.iter + 1 == s.iter; // from the last step's positions
-    const IntegratorStep st = prepareStep(s);
     const long n = (long)s.bodies.size();
+    const PositionMirror::Write mirror = s.positionMirror.beginWrite(n); // (the skin protocol: core/PositionMirror.hpp)
+    const IntegratorStep st = prepareStep(s, mirror);
     const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
     const bool steal = threads > 1;
     if (steal) prepareStealing(threads, n);
@@ -504,11 +489,7 @@ void NewtonIntegrator::action() {
     }
     if (steal && st.energy) addChunkEnergies(s, threads, ids);
     if (st.dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
-    Extremes all;
-    all.maxV2 = maxV2;
-    all.maxMoved2 = maxMoved2;
-    all.diverged = diverged;
-    publishPositions(s, st, continues, writesBefore, all);
+    s.positionMirror.publish(mirror, maxV2, st.dt, maxMoved2);
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));
 }

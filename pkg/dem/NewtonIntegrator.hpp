@@ -1,6 +1,7 @@
 // Integrates the motion of every body from its forces (3.5): leapfrog for positions (3.5.1),
 // orientation update (3.5.2: spherical, or SPIRAL for aspherical bodies), adapted Cundall damping (3.5.12).
 #pragma once
+#include <core/PositionMirror.hpp>
 #include <core/Engine.hpp>
 #include <core/Body.hpp>
 #include <core/State.hpp>
@@ -68,13 +69,12 @@ private:
     // The stages of a step, in order (NewtonIntegrator.cpp):
     void gatherForces(Scene& s);
     EnergyTerms energyTerms(Scene& s) const;
-    IntegratorStep prepareStep(Scene& s);
+    IntegratorStep prepareStep(Scene& s, const PositionMirror::Write& mirror);
     void prepareStealing(int threads, long n);
     void integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x);
     void integrateRange(const IntegratorStep& st, long lo, long hi, EnergySums& e, Extremes& x);
     void addChunkEnergies(Scene& s, int threads, const EnergyTerms& ids) const;
     void addEnergy(Scene& s, const EnergySums& e, const EnergyTerms& id) const;
-    void publishPositions(Scene& s, const IntegratorStep& st, bool continues, long long writesBefore, const Extremes& x);
     std::string diagnose(const Scene& s, Body::id_t id, const std::string& what) const;
 public:
     // (3.5.12): each component of the acceleration is multiplied by 1 - λd·sign(a·(v + a·dt/2)): reduced
