@@ -3,7 +3,7 @@
 lattice in LAMMPS (dense.lammps), interleaved.
 
     /usr/bin/python3 scripts/bench/dense_bench.py [--sizes 5000[,50000]] [--steps S[,S]] [--repeats 3]
-        [--threads 1[,2]] [--no-reference] [--no-lammps] [--no-shares]
+        [--threads 1[,2]] [--law frict[,viscel,mindlin]] [--no-reference] [--no-lammps] [--no-shares]
 
 Each repeat runs every (size, threads) once here, then in the reference (`yade` on PATH), then
 in LAMMPS (`lmp` on PATH), each a fresh process pinned to CPU 0 (CPUs 0-1 with two threads), its
@@ -12,6 +12,13 @@ contacts and peak RSS of each engine, the ratios here/reference and here/LAMMPS 
 pair (median of the per-repeat ratios), the 2-thread/1-thread ratio, and the share of each engine
 of this one (yade.timing, from one more run with O.timingEnabled). Timing is noisy on shared
 machines: quote the ratios of one invocation. Exit status 0 when every run printed its figures.
+
+--law runs the same lattice with another contact law, in this engine and the reference, from a
+copy of dense.py with its material, Ip2 and Law2 replaced (LAMMPS runs the Hooke lattice only):
+  frict   FrictMat, Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack (dense.py itself)
+  viscel  ViscElMat(kn, ks, cn, cs) of the same stiffness as frict, Law2_ScGeom_ViscElPhys_Basic
+  mindlin FrictMat, Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin
+With several laws it prints each law's speed here over frict's, pair by pair.
 """
 
 import argparse
@@ -34,6 +41,32 @@ LAMMPS_RE = re.compile(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps
 SHARE_RE = re.compile(r"^(\w+)\s+\d+\s+\d+\s+[0-9.]+\s+([0-9.]+)%", re.M)
 
 
+FRICT = ("FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600, label='mat')",
+         "Ip2_FrictMat_FrictMat_FrictPhys()", "Law2_ScGeom_FrictPhys_CundallStrack()")
+LAWS = {
+    "frict": FRICT,
+    # kn = 2·E·r as FrictPhys gives two such spheres (the material's kn is halved in series), ks = poisson·kn
+    "viscel": ("ViscElMat(young=1e7, poisson=.3, kn=2e5, ks=6e4, cn=10, cs=3, frictionAngle=.5, density=2600, label='mat')",
+               "Ip2_ViscElMat_ViscElMat_ViscElPhys()", "Law2_ScGeom_ViscElPhys_Basic()"),
+    "mindlin": (FRICT[0], "Ip2_FrictMat_FrictMat_MindlinPhys()", "Law2_ScGeom_MindlinPhys_Mindlin()"),
+}
+
+
+def scene_for(law, tmpdir):
+    """dense.py, or a copy of it with the material, Ip2 and Law2 of `law`."""
+    if law == "frict":
+        return SCENE
+    text = open(SCENE).read()
+    for old, new in zip(FRICT, LAWS[law]):
+        if old not in text:
+            raise SystemExit("dense.py no longer contains %r: update LAWS in %s" % (old, __file__))
+        text = text.replace(old, new)
+    path = os.path.join(tmpdir, "dense_%s.py" % law)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def lattice(n_spheres):
     n = max(2, int(round(n_spheres ** (1. / 3.))))
     return n, max(2, n_spheres // (n * n))
@@ -47,8 +80,8 @@ def timed(cmd, threads, cwd=None, timeout=1800):
     return p.stdout + p.stderr, (int(rss.group(1)) / 1024 if rss else None)
 
 
-def run_yade(binary, n, steps, threads):
-    out, rss = timed([binary, "-n", "-x", "-j%d" % threads, SCENE, str(n), str(steps)], threads, cwd=tempfile.gettempdir())
+def run_yade(binary, scene, n, steps, threads):
+    out, rss = timed([binary, "-n", "-x", "-j%d" % threads, scene, str(n), str(steps)], threads, cwd=tempfile.gettempdir())
     m = LINE_RE.search(out)
     if not m:
         return None
@@ -67,11 +100,16 @@ def run_lammps(n, steps, threads):
     return {"iter_per_s": s / t, "psps": s / t * atoms, "contacts": None, "rss": rss}
 
 
-def shares(n, steps, threads):
-    script = ("import sys, runpy\nsys.argv = [%r, %r, %r]\nfrom yade import O, timing\nO.timingEnabled = True\n"
-              "runpy.run_path(%r, init_globals=dict(globals()), run_name='__main__')\ntiming.stats()\n") % (SCENE, str(n), str(steps), SCENE)
+def shares(scene, n, steps, threads):
+    """Each engine's share of the timed steps (the 20 untimed steps that make the contacts excluded)."""
+    text = open(scene).read()
+    untimed = "O.run(20, True)"
+    if untimed not in text:
+        return []
+    text = text.replace(untimed, untimed + "; O.timingEnabled = True; timing.reset()", 1)
     with tempfile.NamedTemporaryFile("w", suffix=".py", delete=False) as f:
-        f.write(script)
+        f.write("import sys\nsys.argv = [%r, %r, %r]\nfrom yade import O, timing\n" % (scene, str(n), str(steps)))
+        f.write(text + "\ntiming.stats()\n")
     try:
         out, _ = timed([LAUNCHER, "-n", "-x", "-j%d" % threads, f.name], threads)
     finally:
@@ -94,6 +132,7 @@ def main(argv=None):
     ap.add_argument("--steps", default="", help="steps per size (default: 300 below 20 000 spheres, else 100)")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--threads", default="1")
+    ap.add_argument("--law", default="frict", help="contact laws, comma-separated: " + ", ".join(LAWS))
     ap.add_argument("--no-reference", action="store_true")
     ap.add_argument("--no-lammps", action="store_true")
     ap.add_argument("--no-shares", action="store_true")
@@ -103,27 +142,36 @@ def main(argv=None):
     if len(steps) != len(sizes):
         ap.error("--steps needs one value per size")
     threads = [int(x) for x in a.threads.split(",")]
+    laws = a.law.split(",")
+    for law in laws:
+        if law not in LAWS:
+            ap.error("unknown --law %r (known: %s)" % (law, ", ".join(LAWS)))
     ref = None if a.no_reference else (shutil.which("yade-double") or shutil.which("yade"))
     lmp = None if a.no_lammps else shutil.which("lmp")
-    engines = [("here", lambda n, s, t: run_yade(LAUNCHER, n, s, t))]
+    tmpdir = tempfile.mkdtemp(prefix="dense_bench_")
+    scenes = {law: scene_for(law, tmpdir) for law in laws}
+    engines = [("here", lambda law, n, s, t: run_yade(LAUNCHER, scenes[law], n, s, t))]
     if ref:
-        engines.append(("reference", lambda n, s, t: run_yade(ref, n, s, t)))
+        engines.append(("reference", lambda law, n, s, t: run_yade(ref, scenes[law], n, s, t)))
     if lmp:
-        engines.append(("lammps", run_lammps))
+        engines.append(("lammps", lambda law, n, s, t: run_lammps(n, s, t) if law == "frict" else "skip"))
     results, failed = {}, 0
     for r in range(a.repeats):
         for n, s in zip(sizes, steps):
             for t in threads:
-                for name, run in engines:
-                    res = run(n, s, t)
-                    print("repeat %d  %-9s N=%-6d steps=%-4d -j%d  %s" % (r + 1, name, n, s, t,
-                          "failed" if res is None else "%.1f iter/s, %.0f MB" % (res["iter_per_s"], res["rss"] or 0)), flush=True)
-                    failed += res is None
-                    results.setdefault((name, n, t), []).append(res)
-    print("\n%-9s %7s %3s %10s %14s %9s %8s" % ("engine", "N", "-j", "iter/s", "particle-st/s", "contacts", "peak MB"))
-    for (name, n, t), rs in sorted(results.items(), key=lambda kv: (kv[0][1], kv[0][2], kv[0][0])):
+                for law in laws:
+                    for name, run in engines:
+                        res = run(law, n, s, t)
+                        if res == "skip":
+                            continue
+                        print("repeat %d  %-9s %-7s N=%-6d steps=%-4d -j%d  %s" % (r + 1, name, law, n, s, t,
+                              "failed" if res is None else "%.1f iter/s, %.0f MB" % (res["iter_per_s"], res["rss"] or 0)), flush=True)
+                        failed += res is None
+                        results.setdefault((name, law, n, t), []).append(res)
+    print("\n%-9s %-7s %7s %3s %10s %14s %9s %8s" % ("engine", "law", "N", "-j", "iter/s", "particle-st/s", "contacts", "peak MB"))
+    for (name, law, n, t), rs in sorted(results.items(), key=lambda kv: (kv[0][2], kv[0][3], kv[0][1], kv[0][0])):
         ok = [x for x in rs if x]
-        print("%-9s %7d %3d %10s %14s %9s %8s" % (name, n, t, fmt(median([x["iter_per_s"] for x in ok]), ".1f"),
+        print("%-9s %-7s %7d %3d %10s %14s %9s %8s" % (name, law, n, t, fmt(median([x["iter_per_s"] for x in ok]), ".1f"),
               fmt(median([x["psps"] for x in ok]), ".3g"), fmt(median([x["contacts"] for x in ok]), ".0f"),
               fmt(median([x["rss"] for x in ok]), ".0f")))
 
@@ -131,21 +179,27 @@ def main(argv=None):
         pairs = [x["iter_per_s"] / y["iter_per_s"] for x, y in zip(results.get(a_key, []), results.get(b_key, [])) if x and y]
         return (median(pairs), min(pairs), max(pairs)) if pairs else None
 
+    def show(what, q):
+        if q:
+            print("%-44s %.2fx  (pairs %.2f-%.2f)" % (what, q[0], q[1], q[2]))
+
     print()
     for n in sizes:
         for t in threads:
-            for other in ("reference", "lammps"):
-                q = ratio(("here", n, t), (other, n, t))
-                if q:
-                    print("N=%d -j%d  here / %-9s  %.2fx  (pairs %.2f-%.2f)" % (n, t, other, q[0], q[1], q[2]))
-        if len(threads) > 1:
-            q = ratio(("here", n, threads[-1]), ("here", n, threads[0]))
-            if q:
-                print("N=%d  here -j%d / -j%d  %.2fx  (pairs %.2f-%.2f)" % (n, threads[-1], threads[0], q[0], q[1], q[2]))
+            for law in laws:
+                for other in ("reference", "lammps"):
+                    show("N=%d -j%d %s  here / %s" % (n, t, law, other), ratio(("here", law, n, t), (other, law, n, t)))
+                if law != "frict":
+                    show("N=%d -j%d  here %s / here frict" % (n, t, law), ratio(("here", law, n, t), ("here", "frict", n, t)))
+            if len(threads) > 1:
+                for law in laws:
+                    show("N=%d %s  here -j%d / -j%d" % (n, law, threads[-1], threads[0]), ratio(("here", law, n, threads[-1]), ("here", law, n, threads[0])))
     if not a.no_shares:
-        for n, s in zip(sizes, steps):
-            rows = shares(n, s, threads[0])
-            print("\nN=%d -j%d shares of this engine's step: %s" % (n, threads[0], ", ".join("%s %s%%" % r for r in rows) or "(not measured)"))
+        for law in laws:
+            for n, s in zip(sizes, steps):
+                rows = shares(scenes[law], n, s, threads[0])
+                print("\nN=%d -j%d %s: shares of this engine's timed steps: %s" % (n, threads[0], law, ", ".join("%s %s%%" % r for r in rows) or "(not measured)"))
+    shutil.rmtree(tmpdir, ignore_errors=True)
     return 1 if failed else 0
 
 
