@@ -1,4 +1,3 @@
-#include <pkg/dem/Ip2_FrictMat_FrictViscoMat_FrictViscoPhys.hpp>
 #include <pkg/dem/Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys.hpp>
 
 namespace yade {
@@ -9,8 +8,7 @@ void Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys::go(const std::shared_ptr<Ma
     const auto& b = static_cast<const FrictViscoMat&>(*m2);
     // the reference's rule: the mean, unless one of them is 0
     const Real betan = a.betan == 0 ? b.betan : b.betan == 0 ? a.betan : (a.betan + b.betan) / 2;
-    I.phys = Ip2_FrictMat_FrictViscoMat_FrictViscoPhys::makePhys(*scene, I, a, b, betan, kn.get(), kRatio.get(), frictAngle.get(),
-            "Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys");
+    I.phys = makePhys(I, a, b, betan);
 }
 
 } // namespace yade
