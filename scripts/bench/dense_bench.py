@@ -187,13 +187,13 @@ def main(argv=None):
     for n in sizes:
         for t in threads:
             for law in laws:
-                for other in ("reference", "lammps"):
+                for other in ("reference", "lammps") if t == 1 else ("reference",):  # (LAMMPS runs one process)
                     show("N=%d -j%d %s  here / %s" % (n, t, law, other), ratio(("here", law, n, t), (other, law, n, t)))
                 if law != "frict":
                     show("N=%d -j%d  here %s / here frict" % (n, t, law), ratio(("here", law, n, t), ("here", "frict", n, t)))
-            if len(threads) > 1:
-                for law in laws:
-                    show("N=%d %s  here -j%d / -j%d" % (n, law, threads[-1], threads[0]), ratio(("here", law, n, threads[-1]), ("here", law, n, threads[0])))
+        if len(threads) > 1:
+            for law in laws:
+                show("N=%d %s  here -j%d / -j%d" % (n, law, threads[-1], threads[0]), ratio(("here", law, n, threads[-1]), ("here", law, n, threads[0])))
     if not a.no_shares:
         for law in laws:
             for n, s in zip(sizes, steps):
