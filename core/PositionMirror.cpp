@@ -6,7 +6,7 @@ namespace yade {
 
 bool PositionMirror::current() const {
     const BodyContainer& bodies = scene.bodies;
-    return changes == bodies.changes && pos.size() == bodies.size() && (iter == scene.iter || iter + 1 == scene.iter)
+    return changes == bodies.changes && count == bodies.size() && (iter == scene.iter || iter + 1 == scene.iter)
             && writes == externalWrites() && bodies.hot().writableViews == 0;
 }
 
@@ -14,8 +14,7 @@ PositionMirror::Write PositionMirror::beginWrite(size_t n) {
     Write w;
     writesBefore = externalWrites(); // (a write from Python during the pass makes the result stale)
     w.continues = current() && iter + 1 == scene.iter;
-    pos.resize(n);
-    w.pos = pos.data();
+    count = n;
     w.reference = reference && reference->size() == n ? reference->data() : nullptr;
     return w;
 }
@@ -28,6 +27,8 @@ void PositionMirror::publish(const Write& w, Real maxV2, Real dt, Real moved2) {
     maxMoved2 = moved2;
     maxMovedTag = w.reference ? referenceTag : -1;
 }
+
+const Vector3r* PositionMirror::positions() const { return scene.bodies.hot().pos.data(); }
 
 void PositionMirror::setReference(std::shared_ptr<const std::vector<Vector3r>> ref, long long tag) {
     reference = std::move(ref);

@@ -1,7 +1,9 @@
-// The skin protocol: every body's position as the integrator left it, contiguous by id, and what
-// the collider and the interaction loop may conclude from it without visiting the bodies.
+// The skin protocol: whether the bodies' position column (BodyStore::pos, contiguous by id) holds
+// the positions the integrator left, and what the collider and the interaction loop may conclude
+// from it without visiting the bodies: how far any body moved in a step, and how far from the
+// skin's reference.
 //
-// Who writes: NewtonIntegrator, once per step (beginWrite, then publish after its pass).
+// Who writes: NewtonIntegrator, once per step (beginWrite, its pass over the columns, publish).
 // Who reads: InsertionSortCollider (needsRun: has any body left its box?) and InteractionLoop
 //   (the shape cache's positions, and the skin's largest displacement). A reader uses positions(),
 //   maxStep() and maxMovedSince() only while current() is true.
@@ -32,23 +34,24 @@ public:
     PositionMirror& operator=(const PositionMirror&) = delete;
 
     // --- the integrator (the only writer) ---
-    // Before its pass: whether the pass continues from the positions of the last step (then maxStep
-    // bounds the move), the array of n positions to fill, and the reference to measure from (or null).
+    // Before its pass over the n bodies: whether it continues from the positions of the last step
+    // (then maxStep bounds the move), and the reference to measure from (or null).
     struct Write {
         bool continues;
-        Vector3r* pos;
         const Vector3r* reference;
     };
     Write beginWrite(size_t n);
-    // After its pass: the fastest body's squared velocity, and the largest squared distance from the
-    // reference (when beginWrite gave one). The positions are then current for this step.
+    // After its pass (the column holds every body's new position): the fastest body's squared
+    // velocity, and the largest squared distance from the reference (when beginWrite gave one).
+    // The positions are then current for this step.
     void publish(const Write& w, Real maxV2, Real dt, Real maxMoved2);
 
     // --- the readers ---
     bool current() const;
-    // The positions (NaN for holes in the ids), the step that wrote them, and a bound on how far any
-    // body moved in that step (Inf when it did not start from the positions before it).
-    const Vector3r* positions() const { return pos.data(); }
+    // The positions (BodyStore::pos; an entry of a hole in the ids means nothing), the step that
+    // wrote them, and a bound on how far any body moved in that step (Inf when it did not start
+    // from the positions before it).
+    const Vector3r* positions() const;
     long long step() const { return iter; }
     Real maxStep() const { return maxStepLen; }
 
@@ -64,7 +67,7 @@ public:
 
 private:
     const Scene& scene;
-    std::vector<Vector3r> pos;
+    size_t count = 0;                               // how many bodies when written
     long long iter = -1, writes = -1, changes = -1; // when written: step, externalWrites(), bodies.changes
     long long writesBefore = -1;                    // externalWrites() when the write began
     Real maxStepLen = Inf;

@@ -258,9 +258,24 @@ def test_dense_harness_runs_and_prints_its_table():
     p = subprocess.run([sys.executable, str(BENCH / "dense_bench.py"), "--sizes", "300", "--steps", "20",
                         "--repeats", "1", "--no-reference", "--no-lammps"], capture_output=True, text=True, timeout=300)
     assert p.returncode == 0, p.stdout + p.stderr
-    row = re.search(r"^here\s+(\d+)\s+1\s+([0-9.]+)\s+([0-9.e+]+)\s+(\d+)\s+(\d+)", p.stdout, re.M)
+    row = re.search(r"^here\s+frict\s+(\d+)\s+1\s+([0-9.]+)\s+([0-9.e+]+)\s+(\d+)\s+(\d+)", p.stdout, re.M)
     assert row, p.stdout
     assert int(row.group(1)) == 300 and float(row.group(2)) > 0 and int(row.group(4)) > 2 * 294 and int(row.group(5)) > 10
-    shares = dict(re.findall(r"(\w+) ([0-9.]+)%", p.stdout.split("shares of this engine's step:")[1]))
+    shares = dict(re.findall(r"(\w+) ([0-9.]+)%", p.stdout.split("shares of this engine's timed steps:")[1]))
     assert {"InteractionLoop", "NewtonIntegrator"} <= set(shares)
     assert sum(map(float, shares.values())) == pytest.approx(100, abs=1)
+
+
+def test_dense_harness_other_laws():
+    """--law viscel,mindlin: the same lattice with ViscEl and Hertz-Mindlin (the same contacts, all
+    live), each law's speed over Cundall-Strack's printed; an unknown law is refused by name."""
+    p = subprocess.run([sys.executable, str(BENCH / "dense_bench.py"), "--sizes", "300", "--steps", "20", "--repeats", "1",
+                        "--no-reference", "--no-lammps", "--no-shares", "--law", "frict,viscel,mindlin"],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr
+    contacts = {law: int(c) for law, c in re.findall(r"^here\s+(\w+)\s+300\s+1\s+[0-9.]+\s+[0-9.e+]+\s+(\d+)", p.stdout, re.M)}
+    assert set(contacts) == {"frict", "viscel", "mindlin"}, p.stdout
+    assert all(c > 2 * 294 for c in contacts.values())
+    assert re.search(r"here viscel / here frict\s+[0-9.]+x", p.stdout) and re.search(r"here mindlin / here frict\s+[0-9.]+x", p.stdout)
+    bad = subprocess.run([sys.executable, str(BENCH / "dense_bench.py"), "--law", "hooke"], capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and "unknown --law 'hooke'" in bad.stderr

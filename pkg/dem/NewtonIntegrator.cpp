@@ -140,7 +140,6 @@ struct IntegratorStep {
     bool gravityDamped, aspherical, energy, split;
     int moveMask;
     BodyStore::Columns h;
-    Vector3r* mir;             // PositionMirror::Write::pos: every body's position after this step
     const Vector3r* F;         // the force and torque totals
     const Vector3r* T;
     char* spins;               // NewtonIntegrator::spinning
@@ -268,18 +267,15 @@ static inline bool finiteState(const Vector3r& pos, const Vector3r& vel, const V
 }
 
 // One body's step: its new state, the guard, then its entries written (false: not finite, the last
-// state kept). Holes and bodies outside the mask are not moved. Its position goes to the mirror,
-// st.spins[id] says whether turnSpheres turns it; its energy terms are added to sum (any: some
+// state kept). Holes and bodies outside the mask are not moved. st.spins[id] says whether turnSpheres turns it; its energy terms are added to sum (any: some
 // were) and its squared velocity to maxV2.
 static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& sum, bool& any, Real& maxV2) {
     const BodyStore::Columns& h = st.h;
     st.spins[id] = false;
     if (!h.exists[id]) { // (the State of a body is a view of its entries in these columns)
-        st.mir[id] = Vector3r::Constant(NaN);
         return true;
     }
     Vector3r& statePos = h.pos[id];
-    st.mir[id] = statePos; // replaced below by the new position
     if (st.moveMask != -1 && !(h.mask[id] & st.moveMask)) return true; // bodies outside the mask are not moved
     const int blocked = h.blockedDOFsMask[id];
     const bool dynamic = blocked != State::DOF_ALL;
@@ -293,7 +289,6 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     h.angVel[id] = angVel;
     if (a.angMom) *a.angMom = a.newAngMom; // (zero for a still body)
     statePos = pos;
-    st.mir[id] = pos;
     if (st.energy && dynamic) { // summed in registers, added to O.energy once per thread or per chunk
         sum.grav += e.grav;
         sum.kin += e.kin;
@@ -311,9 +306,9 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
 
 // The skin's displacement (doc/performance.md, "The skin of the fast path"): the largest squared
 // distance of bodies b0 .. b1-1 from their reference positions, into m (just written: in cache;
-// holes: NaN, ignored).
+// holes and bodies other than spheres: their reference is NaN, ignored).
 static inline void maxMovedSince(const IntegratorStep& st, long b0, long b1, Real& m) {
-    for (long id = b0; id < b1; ++id) m = std::max(m, (st.mir[id] - st.reference[id]).squaredNorm());
+    for (long id = b0; id < b1; ++id) m = std::max(m, (st.h.pos[id] - st.reference[id]).squaredNorm());
 }
 
 // Bodies lo .. hi-1, their energy terms into sums (each body's new state does not depend on the
@@ -424,8 +419,8 @@ NewtonIntegrator::EnergyTerms NewtonIntegrator::energyTerms(Scene& s) const {
     return ids;
 }
 
-// The step's constants, with the position mirror's arrays (PositionMirror::beginWrite), and the spin
-// flags sized to the bodies.
+// The step's constants, with the skin's reference positions (PositionMirror::beginWrite), and the
+// spin flags sized to the bodies.
 IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const PositionMirror::Write& mirror) {
     spinning.resize(s.bodies.size());
     IntegratorStep st;
@@ -439,7 +434,6 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const PositionMirror::Wri
     st.split = st.energy && kinSplit;
     st.moveMask = mask;
     st.h = s.bodies.hot().columns();
-    st.mir = mirror.pos;
     st.F = s.forces.forceData();
     st.T = s.forces.torqueData();
     st.spins = spinning.data();
