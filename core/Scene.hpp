@@ -5,7 +5,7 @@
 #include <core/Engine.hpp>
 #include <core/ForceContainer.hpp>
 #include <core/InteractionContainer.hpp>
-#include <core/PositionMirror.hpp>
+#include <core/MotionRecord.hpp>
 #include <map>
 #include <mutex>
 
@@ -35,9 +35,10 @@ public:
     // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
     // the integrator's stability guard), cleared at the start of each step.
     std::vector<Body::id_t> newContactBodies;
-    // The skin protocol: every body's position as the integrator left it, for the collider and the
-    // interaction loop (who writes, who reads, what invalidates it: core/PositionMirror.hpp).
-    PositionMirror positionMirror{*this};
+    // The skin protocol: whether the positions are as the integrator left them and how far bodies
+    // moved, for the collider and the interaction loop (who writes, who reads, what invalidates
+    // it: core/MotionRecord.hpp).
+    MotionRecord motion{*this};
 
     Scene();
     // O drops this scene (O.reset(), O.load()): the NumPy views of its bodies and contacts, which

@@ -12,7 +12,7 @@ bool InsertionSortCollider::needsRun() {
     const Real limit2 = sweep * sweep;
     const long n = (long)bodies.size();
     int moved = 0;
-    const PositionMirror& m = scene->positionMirror; // (the skin protocol: core/PositionMirror.hpp)
+    const MotionRecord& m = scene->motion; // (the skin protocol: core/MotionRecord.hpp)
     if (m.current() && boxes.size() == bodies.size()) { // contiguous: the integrator's positions, our boxes
         // no body moved farther than the sum of the fastest body's steps since the bounds were made
         // (each step with the rounding of pos + vel·dt): below the sweep, nothing to check
@@ -49,7 +49,7 @@ void InsertionSortCollider::updateBounds() {
     }
     scale = extent;
     travelled = 0; // the bounds start from the positions now, those of the last step's integrator if current
-    travelledTo = scene->positionMirror.current() ? scene->positionMirror.step() : scene->iter - 1;
+    travelledTo = scene->motion.current() ? scene->motion.step() : scene->iter - 1;
     sweep = verletDist >= 0 ? verletDist : (std::isfinite(minRadius) ? -verletDist * minRadius : 0);
     // the first rebuild turns a relative verletDist into the distance it gave, as the reference does (-0.5 with
     // a smallest radius of 0.3 reads 0.15 after the first step); a relative value set later stays relative

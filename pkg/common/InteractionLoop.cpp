@@ -91,9 +91,9 @@ bool InteractionLoop::prepareQuickReject() {
     if (sphereSphereReach <= 0 && facetSphereReach <= 0) return false;
     const BodyContainer& bodies = scene->bodies;
     const long n = (long)bodies.size();
-    quickFromMirror = !cacheBuilt && scene->positionMirror.current();
-    if (quickFromMirror) { // shapes unchanged: the integrator's positions
-        shapePos = scene->positionMirror.positions();
+    quickFromIntegrator = !cacheBuilt && scene->motion.current();
+    if (quickFromIntegrator) { // shapes unchanged: the integrator's positions
+        shapePos = scene->motion.positions();
         if (!quickPos.empty()) std::vector<Vector3r>().swap(quickPos); // (the usual case: not kept)
     } else { // from the bodies' records
         quickPos.resize(n);
@@ -137,7 +137,7 @@ void InteractionLoop::prepareSkin(bool quick) {
     }
     const size_t n = shapeCache.radius.size();
     // (facets that moved or turned keep the epoch: their motion is added to D, facetDisplacement2)
-    const bool keep = quickFromMirror && skin.pairsBuild == threadPairsBuild && skin.refPos->size() == n
+    const bool keep = quickFromIntegrator && skin.pairsBuild == threadPairsBuild && skin.refPos->size() == n
             && skin.facetPlanes.size() == facetPlanes.size() && skin.sphereSphereReach == sphereSphereReach && skin.facetSphereReach == facetSphereReach;
     skin.active = true;
     if (keep) return;
@@ -152,7 +152,7 @@ void InteractionLoop::prepareSkin(bool quick) {
     // the integrator measures D from them too (a tag unique to this epoch of this loop)
     static std::atomic<long long> epochs{0};
     skin.tag = ++epochs;
-    scene->positionMirror.setReference(skin.refPos, skin.tag);
+    scene->motion.setReference(skin.refPos, skin.tag);
     Real scale = 0;
     for (size_t id = 0; id < n; ++id) {
         const Real extent = (*skin.refPos)[id].cwiseAbs().maxCoeff() + std::abs(shapeCache.radius[id]);
@@ -765,7 +765,7 @@ void InteractionLoop::runLoop() {
     // D² of the spheres, and of the facets
     Real displacement2 = 0;
     const Real facetDisplacement = skinRef ? facetDisplacement2() : 0;
-    const Real movedByIntegrator = skinRef && quickFromMirror ? s.positionMirror.maxMovedSince(skin.tag) : NaN;
+    const Real movedByIntegrator = skinRef && quickFromIntegrator ? s.motion.maxMovedSince(skin.tag) : NaN;
     if (!std::isnan(movedByIntegrator)) { // found by the integrator with these positions
         displacement2 = std::max(displacement2, movedByIntegrator);
         skinRef = nullptr;

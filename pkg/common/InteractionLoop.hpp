@@ -55,7 +55,7 @@ private:
     // sphere > 0; facet: -1 - (index into facetPlanes); anything else NaN), and facet planes, so
     // that distant potential sphere-sphere and facet-sphere pairs are rejected without touching
     // bodies or interactions (the Ig2 functors' quickRejectFactor promise). The centers are the
-    // integrator's positions (Scene::positionMirror) while they are current, else copied from the
+    // integrator's positions (Scene::motion) while they are current, else copied from the
     // bodies into quickPos; the radii are shapeCache's.
     struct FacetPlane {
         Vector3r point, normal; // the facet's centre (its inscribed circle's), unit normal (global)
@@ -65,7 +65,7 @@ private:
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
     const Real* shapeRadius = nullptr;
-    bool quickFromMirror = false; // this step's centers are the integrator's positions (the radii cached)
+    bool quickFromIntegrator = false; // this step's centers are the integrator's positions (the radii cached)
     bool cacheBuilt = false;      // prepareShapes() rebuilt shapeCache in this step
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
     // while no body was added or removed and nothing was written from Python.
@@ -113,7 +113,7 @@ private:
     // make the pairs of spheres tested again. An epoch ends when the interactions, the bodies,
     // anything written from Python, the set of facets or the functors' reach change.
     struct Skin {
-        // each body's position at the start of the epoch (the reference of Scene::positionMirror: PositionMirror::setReference)
+        // each body's position at the start of the epoch (the reference of Scene::motion: MotionRecord::setReference)
         std::shared_ptr<const std::vector<Vector3r>> refPos = std::make_shared<std::vector<Vector3r>>();
         std::vector<std::vector<float>> gap; // per thread list, per entry: g - 2D (-Inf: test the pair), rounded down
         std::vector<std::vector<unsigned>> todo; // per thread list: the entries tested in this step
@@ -129,7 +129,7 @@ private:
         Real sphereSphereReach = NaN, facetSphereReach = NaN;
         Real tolerance = 0;                  // rounding margin, relative to the scene's coordinates
         long long pairsBuild = -1;           // threadPairsBuild when the epoch began
-        long long tag = -1;                  // this epoch's tag of the mirror's reference (PositionMirror::setReference)
+        long long tag = -1;                  // this epoch's tag of the motion record's reference (MotionRecord::setReference)
         bool active = false;                 // used in this step
         bool fresh = false;                  // the epoch begins in this step (D = 0, every pair tested)
     } skin;

@@ -143,7 +143,7 @@ struct IntegratorStep {
     const Vector3r* F;         // the force and torque totals
     const Vector3r* T;
     char* spins;               // NewtonIntegrator::spinning
-    const Vector3r* reference; // the skin's reference positions (PositionMirror::Write), or null
+    const Vector3r* reference; // the skin's reference positions (MotionRecord::Write), or null
 };
 
 // A body's energy terms in a step, or their sums over bodies (kin: all the kinetic energy, or its
@@ -419,9 +419,9 @@ NewtonIntegrator::EnergyTerms NewtonIntegrator::energyTerms(Scene& s) const {
     return ids;
 }
 
-// The step's constants, with the skin's reference positions (PositionMirror::beginWrite), and the
+// The step's constants, with the skin's reference positions (MotionRecord::beginWrite), and the
 // spin flags sized to the bodies.
-IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const PositionMirror::Write& mirror) {
+IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write& motion) {
     spinning.resize(s.bodies.size());
     IntegratorStep st;
     st.scene = &s;
@@ -437,7 +437,7 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const PositionMirror::Wri
     st.F = s.forces.forceData();
     st.T = s.forces.torqueData();
     st.spins = spinning.data();
-    st.reference = mirror.reference;
+    st.reference = motion.reference;
     return st;
 }
 
@@ -465,8 +465,8 @@ void NewtonIntegrator::action() {
     if (stabilityCheckPeriod > 0) lastCheckedDt = s.dt;
     if (full) crit = criticalTimeStep(s, true);
     const long n = (long)s.bodies.size();
-    const PositionMirror::Write mirror = s.positionMirror.beginWrite(n); // (the skin protocol: core/PositionMirror.hpp)
-    const IntegratorStep st = prepareStep(s, mirror);
+    const MotionRecord::Write motion = s.motion.beginWrite(n); // (the skin protocol: core/MotionRecord.hpp)
+    const IntegratorStep st = prepareStep(s, motion);
     const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
     const bool steal = threads > 1;
     if (steal) prepareStealing(threads, n);
@@ -483,7 +483,7 @@ void NewtonIntegrator::action() {
     }
     if (steal && st.energy) addChunkEnergies(s, threads, ids);
     if (st.dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
-    s.positionMirror.publish(mirror, maxV2, st.dt, maxMoved2);
+    s.motion.publish(motion, maxV2, st.dt, maxMoved2);
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));
 }

@@ -1,7 +1,7 @@
 // Integrates the motion of every body from its forces (3.5): leapfrog for positions (3.5.1),
 // orientation update (3.5.2: spherical, or SPIRAL for aspherical bodies), adapted Cundall damping (3.5.12).
 #pragma once
-#include <core/PositionMirror.hpp>
+#include <core/MotionRecord.hpp>
 #include <core/Engine.hpp>
 #include <core/Body.hpp>
 #include <core/State.hpp>
@@ -69,7 +69,7 @@ private:
     // The stages of a step, in order (NewtonIntegrator.cpp):
     void gatherForces(Scene& s);
     EnergyTerms energyTerms(Scene& s) const;
-    IntegratorStep prepareStep(Scene& s, const PositionMirror::Write& mirror);
+    IntegratorStep prepareStep(Scene& s, const MotionRecord::Write& motion);
     void prepareStealing(int threads, long n);
     void integrateShare(const IntegratorStep& st, long n, int threads, const EnergyTerms& ids, Extremes& x);
     void integrateRange(const IntegratorStep& st, long lo, long hi, EnergySums& e, Extremes& x);

@@ -26,7 +26,7 @@ void StepDisplacer::action() {
         st.pos() += mov;
         st.ori() = q * st.ori();
     }
-    scene->positionMirror.invalidate(); // (not the integrator's move: the collider and the loop check the positions again)
+    scene->motion.invalidate(); // (not the integrator's move: the collider and the loop check the positions again)
 }
 
 } // namespace yade

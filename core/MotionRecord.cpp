@@ -1,16 +1,16 @@
-#include <core/PositionMirror.hpp>
+#include <core/MotionRecord.hpp>
 #include <core/Scene.hpp>
 #include <lib/base/ExternalWrites.hpp>
 
 namespace yade {
 
-bool PositionMirror::current() const {
+bool MotionRecord::current() const {
     const BodyContainer& bodies = scene.bodies;
     return changes == bodies.changes && count == bodies.size() && (iter == scene.iter || iter + 1 == scene.iter)
             && writes == externalWrites() && bodies.hot().writableViews == 0;
 }
 
-PositionMirror::Write PositionMirror::beginWrite(size_t n) {
+MotionRecord::Write MotionRecord::beginWrite(size_t n) {
     Write w;
     writesBefore = externalWrites(); // (a write from Python during the pass makes the result stale)
     w.continues = current() && iter + 1 == scene.iter;
@@ -19,7 +19,7 @@ PositionMirror::Write PositionMirror::beginWrite(size_t n) {
     return w;
 }
 
-void PositionMirror::publish(const Write& w, Real maxV2, Real dt, Real moved2) {
+void MotionRecord::publish(const Write& w, Real maxV2, Real dt, Real moved2) {
     iter = scene.iter;
     writes = writesBefore;
     changes = scene.bodies.changes;
@@ -28,13 +28,13 @@ void PositionMirror::publish(const Write& w, Real maxV2, Real dt, Real moved2) {
     maxMovedTag = w.reference ? referenceTag : -1;
 }
 
-const Vector3r* PositionMirror::positions() const { return scene.bodies.hot().pos.data(); }
+const Vector3r* MotionRecord::positions() const { return scene.bodies.hot().pos.data(); }
 
-void PositionMirror::setReference(std::shared_ptr<const std::vector<Vector3r>> ref, long long tag) {
+void MotionRecord::setReference(std::shared_ptr<const std::vector<Vector3r>> ref, long long tag) {
     reference = std::move(ref);
     referenceTag = tag;
 }
 
-Real PositionMirror::maxMovedSince(long long tag) const { return maxMovedTag == tag && referenceTag == tag ? maxMoved2 : NaN; }
+Real MotionRecord::maxMovedSince(long long tag) const { return maxMovedTag == tag && referenceTag == tag ? maxMoved2 : NaN; }
 
 } // namespace yade

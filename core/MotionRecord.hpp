@@ -27,11 +27,11 @@ namespace yade {
 
 class Scene;
 
-class PositionMirror {
+class MotionRecord {
 public:
-    explicit PositionMirror(const Scene& s) : scene(s) {}
-    PositionMirror(const PositionMirror&) = delete;
-    PositionMirror& operator=(const PositionMirror&) = delete;
+    explicit MotionRecord(const Scene& s) : scene(s) {}
+    MotionRecord(const MotionRecord&) = delete;
+    MotionRecord& operator=(const MotionRecord&) = delete;
 
     // --- the integrator (the only writer) ---
     // Before its pass over the n bodies: whether it continues from the positions of the last step
