@@ -267,8 +267,9 @@ static inline bool finiteState(const Vector3r& pos, const Vector3r& vel, const V
 }
 
 // One body's step: its new state, the guard, then its entries written (false: not finite, the last
-// state kept). Holes and bodies outside the mask are not moved. st.spins[id] says whether turnSpheres turns it; its energy terms are added to sum (any: some
-// were) and its squared velocity to maxV2.
+// state kept). Holes and bodies outside the mask are not moved. st.spins[id] says whether
+// turnSpheres turns it; its energy terms are added to sum (any: some were) and its squared velocity
+// to maxV2.
 static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& sum, bool& any, Real& maxV2) {
     const BodyStore::Columns& h = st.h;
     st.spins[id] = false;
