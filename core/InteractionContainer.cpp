@@ -146,6 +146,31 @@ void InteractionContainer::makeContact(size_t k, const std::shared_ptr<IGeom>& g
     makeViews(k);
 }
 
+void InteractionContainer::restoreContact(const ContactPool::Header& h, const IGeom& g, const IPhys& p) {
+    const size_t k = h.k;
+    if (k >= size() || !((pairIds[2 * k] == h.id1 && pairIds[2 * k + 1] == h.id2) || (pairIds[2 * k] == h.id2 && pairIds[2 * k + 1] == h.id1)))
+        throw std::invalid_argument("a contact names a pair that does not exist");
+    if (contactOf[k] != noContact || recordOf[k] != noRecord) throw std::invalid_argument("the same contact appears twice");
+    uint32_t index;
+    ContactPool& P = poolFor(g, p, index);
+    const size_t s = P.append(ContactPool::Header{h.id1, h.id2, (uint32_t)k, 0, h.iterMadeReal}, g, p);
+    if (s >= (size_t(1) << slotBits)) throw std::length_error("more than 2^26 contacts of one kind");
+    contactOf[k] = (index << slotBits) | (uint32_t)s;
+    wasReal[k] = 1;
+}
+
+void InteractionContainer::restoreUnpooled(size_t k, Ptr I) {
+    if (k >= size() || !I) throw std::invalid_argument("an interaction names a pair that does not exist");
+    if (contactOf[k] != noContact || recordOf[k] != noRecord) throw std::invalid_argument("the same interaction appears twice");
+    wasReal[k] = I->isReal();
+    prepareRecords();
+    Record& rec = ensureRecord(k);
+    rec.geom = I->geom;
+    rec.phys = I->phys;
+    rec.object = std::move(I);
+    ++objectsMade;
+}
+
 void InteractionContainer::keepGeom(size_t k, std::shared_ptr<IGeom> g) {
     Record& rec = ensureRecord(k);
     if (rec.object) rec.object->geom = g;

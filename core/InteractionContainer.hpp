@@ -84,6 +84,14 @@ public:
     void endContact(size_t k);
     // After the loop's parallel part: the ended contacts' records leave their pools.
     void sweep();
+    // A contact read from a saved file joins the pool of its classes as it was (the header's ids and
+    // step; k is the pair's entry, a potential pair until then). Throws std::invalid_argument if the
+    // header does not name pair k or the pair is a contact already.
+    void restoreContact(const ContactPool::Header& h, const IGeom& g, const IPhys& p);
+    // An interaction read from a saved file whose geometry or physics were outside a pool (a geometry
+    // before its physics, objects set from Python): pair k keeps the object, and they join a pool at
+    // the next step, as after insert().
+    void restoreUnpooled(size_t k, Ptr I);
     // Puts each pool's records in the order of the pairs in `lists` (the interaction loop's thread
     // lists, one after the other): the records a thread reads one after the other are then
     // neighbours, and no cache line holds records of two threads (appended in parallel, they

@@ -1,20 +1,21 @@
+#include <core/SceneBlocks.hpp>
 #include <core/SceneIO.hpp>
+#include <lib/serialization/Validate.hpp>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <system_error>
 #include <unordered_map>
 
 namespace yade {
 
 namespace {
 
-std::string fmt(Real x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return buf;
-}
+using Validate::checkFlags;
+using Validate::fmt;
+using Validate::utf8;
 
 Real parseReal(const std::string& s) {
     char* end = nullptr;
@@ -36,56 +37,6 @@ int toInt(Real x, const std::string& where) {
     if (!(x == std::floor(x) && x >= std::numeric_limits<int>::min() && x <= std::numeric_limits<int>::max()))
         throw FormatError(where + ": expected a 32-bit integer, found " + fmt(x));
     return (int)x;
-}
-
-bool sameValue(Real a, Real b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-// The positive / nonNegative / finite flags of an attribute, applied to n numbers read from a file as
-// the Python setters apply them to assigned values. A value equal to the constructor's default (which
-// the object holds before it is read: e.g. the NaN radius of Sphere()) is accepted, as a missing one is;
-// items of lists (dflt null) have no default.
-void checkFlags(const AttrInfo& a, const Real* x, const Real* dflt, int n, const std::string& where) {
-    for (int i = 0; i < n; ++i) {
-        if (dflt && sameValue(x[i], dflt[i])) continue;
-        const bool fin = std::isfinite(x[i]);
-        const char* problem = nullptr;
-        if (a.has(Attr::positive) && !(fin && x[i] > 0)) problem = " must be positive and finite";
-        else if (a.has(Attr::nonNegative) && !(fin && x[i] >= 0)) problem = " must be non-negative and finite";
-        else if (a.has(Attr::finite) && !fin) problem = " must be finite";
-        if (problem) throw FormatError(where + problem + ", found " + fmt(x[i]));
-    }
-}
-
-// Strings come from Python, so they are UTF-8. A damaged one would only fail later, when Python reads it
-// (a label is read at once: UnicodeDecodeError after the scene was replaced), so it refuses the file.
-bool validUtf8(const std::string& s) {
-    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
-    const auto* end = p + s.size();
-    while (p < end) {
-        const unsigned c = *p++;
-        int more;
-        unsigned lo = 0x80, hi = 0xbf; // the range of the first continuation byte
-        if (c < 0x80) continue;
-        else if (c >= 0xc2 && c <= 0xdf) more = 1;
-        else if (c >= 0xe0 && c <= 0xef) {
-            more = 2;
-            if (c == 0xe0) lo = 0xa0;      // (overlong)
-            else if (c == 0xed) hi = 0x9f; // (surrogates)
-        } else if (c >= 0xf0 && c <= 0xf4) {
-            more = 3;
-            if (c == 0xf0) lo = 0x90;      // (overlong)
-            else if (c == 0xf4) hi = 0x8f; // (above U+10FFFF)
-        } else return false;
-        if (end - p < more || *p < lo || *p > hi) return false;
-        for (++p, --more; more > 0; --more, ++p)
-            if (*p < 0x80 || *p > 0xbf) return false;
-    }
-    return true;
-}
-
-const std::string& utf8(const std::string& s, const std::string& where) {
-    if (!validUtf8(s)) throw FormatError(where + ": a string that is not valid UTF-8 ('" + s.substr(0, 40) + "')");
-    return s;
 }
 
 // Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
@@ -239,7 +190,7 @@ private:
             case AttrKind::Quaternionr: {
                 Quaternionr q = *static_cast<Quaternionr*>(p);
                 fill(q.coeffs().data(), 4);
-                if (!(std::isfinite(q.norm()) && q.norm() > 0)) throw FormatError(where + " must be a finite non-zero quaternion");
+                Validate::checkQuaternion(q.coeffs().data(), where);
                 *static_cast<Quaternionr*>(p) = q;
                 break;
             }
@@ -422,21 +373,39 @@ std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
     return s;
 }
 
-std::string SceneIO::save(Scene& scene, bool xml) {
-    const Node root = toNode(scene);
-    return xml ? NodeIO::toXml(root) : NodeIO::toBinary(root);
+void SceneIO::save(Scene& scene, ByteSink& out, bool xml) {
+    if (!xml) return SceneBlocks::write(scene, out);
+    const std::string text = NodeIO::toXml(toNode(scene));
+    out.write(text.data(), text.size());
+    out.close();
 }
 
-std::shared_ptr<Scene> SceneIO::load(const std::string& data) {
+std::string SceneIO::save(Scene& scene, bool xml) {
+    std::string data;
+    save(scene, *stringSink(data, Codec::none), xml);
+    return data;
+}
+
+std::shared_ptr<Scene> SceneIO::load(ByteSource& in) {
     try {
+        std::string data(SceneBlocks::magicSize, '\0');
+        data.resize(in.read(&data[0], data.size()));
+        if (data == SceneBlocks::magic) return SceneBlocks::read(in);
+        // the tree (XML, or binary files of format version 1): read whole, then parsed
+        char chunk[1 << 16];
+        for (size_t n; (n = in.read(chunk, sizeof chunk)) > 0;) data.append(chunk, n);
         return fromNode(NodeIO::parse(data));
     } catch (FormatError&) {
         throw;
     } catch (std::bad_alloc&) { // out of memory (MemoryError in Python): not a corrupt file
         throw;
-    } catch (std::exception& e) { // stoll on garbage, bad dt...
+    } catch (std::system_error&) { // reading failed (OSError in Python)
+        throw;
+    } catch (std::exception& e) { // stoll on garbage, bad dt, a value postLoad refuses...
         throw FormatError(std::string("corrupt file: ") + e.what());
     }
 }
+
+std::shared_ptr<Scene> SceneIO::load(const std::string& data) { return load(*stringSource(data)); }
 
 } // namespace yade

@@ -23,7 +23,8 @@ STAGES=("$@")
 (( ${#STAGES[@]} > 0 )) || STAGES=(asan tsan)
 
 # ------------------------------------------------------------------ packages (as scripts/setup.sh)
-PACKAGES=(build-essential cmake g++ python3-dev python3-pytest libgtest-dev clang libclang-rt-dev libomp-dev ccache)
+PACKAGES=(build-essential cmake g++ python3-dev python3-pytest libgtest-dev clang libclang-rt-dev libomp-dev ccache
+          zlib1g-dev libbz2-dev libzstd-dev pkg-config)
 missing=()
 for p in "${PACKAGES[@]}"; do
     status="$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)"

@@ -7,7 +7,8 @@ REPO="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
 cd "$REPO"
 
 PACKAGES=(build-essential cmake g++ libeigen3-dev pybind11-dev python3-dev
-          python3-numpy python3-pytest ipython3 python3-matplotlib libgtest-dev time ccache)
+          python3-numpy python3-pytest ipython3 python3-matplotlib libgtest-dev time ccache
+          zlib1g-dev libbz2-dev libzstd-dev pkg-config)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -18,6 +18,7 @@ import struct
 import subprocess
 import sys
 import textwrap
+import zlib
 
 import pytest
 
@@ -31,7 +32,8 @@ from yade.utils import PWaveTimeStep, sphere, wall
 
 G = 9.81
 FORMATS = ['scene.yade', 'scene.xml', 'scene.yade.gz', 'scene.xml.gz', 'scene.yade.bz2', 'scene.xml.bz2']
-BINARY_MAGIC = b'YADE-CLONE-BINARY\n'
+BINARY_MAGIC = b'YADE-CLONE-BLOCKS\n'
+OLD_BINARY_MAGIC = b'YADE-CLONE-BINARY\n'  # (format version 1)
 
 
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
@@ -759,6 +761,29 @@ def good(tmp_path):
     return out
 
 
+def blocks(data):
+    """The blocks of a binary file (doc/file-format.md): [(type, payload)], checking the checksums."""
+    assert data.startswith(BINARY_MAGIC)
+    out, i = [], len(BINARY_MAGIC)
+    while i < len(data):
+        kind, n, crc = struct.unpack_from('<4sQI', data, i)
+        payload = data[i + 16:i + 16 + n]
+        assert zlib.crc32(payload) == crc
+        out.append((kind, payload))
+        i += 16 + n
+    return out
+
+
+def reblocked(data, edit):
+    """The file with each block's payload replaced by edit(type, payload), checksums made right: a
+    damaged file whose damage only the checks of the content can find."""
+    out = BINARY_MAGIC
+    for kind, payload in blocks(data):
+        payload = edit(kind, payload)
+        out += struct.pack('<4sQI', kind, len(payload), zlib.crc32(payload)) + payload
+    return out
+
+
 def refused(tmp_path, data, name='bad', exc=yade.FileFormatError):
     """Loading `data` raises exc with a message naming the file; the scene is unchanged."""
     path = tmp_path / name
@@ -893,10 +918,9 @@ def test_corrupt_bz2_stream_raises_FileFormatError(tmp_path, good):
 
 
 def test_error_message_survives_non_utf8_bytes(tmp_path, good):
-    data = good['scene.yade']
-    assert b'\x06Sphere' in data
-    msg = refused(tmp_path, data.replace(b'\x06Sphere', b'\x06Sph\xffre', 1))
-    assert 'unknown class' in msg
+    data = reblocked(good['scene.yade'], lambda kind, payload: payload.replace(b'\x06Sphere', b'\x06Sph\xffre', 1))
+    msg = refused(tmp_path, data)
+    assert 'unknown class' in msg and 'Sph\\xffre' in msg
 
 
 def test_number_with_trailing_garbage_is_refused(tmp_path, good):
@@ -993,25 +1017,17 @@ def test_save_replaces_an_existing_file_atomically(tmp_path, monkeypatch):
     assert temporaries(tmp_path) == []
     monkeypatch.undo()
 
-    # writing fails half-way: same
-    realFdopen = os.fdopen
+    # writing fails half-way (the disk is full: the file is /dev/full, where every write fails with
+    # ENOSPC): same, and the error is the OSError the C++ writer met, naming the file
+    realSave = P.Omega._saveToFd
 
-    class HalfWriter:
-        def __init__(self, f):
-            self.f = f
-
-        def __enter__(self):
-            return self
-
-        def __exit__(self, *a):
-            self.f.close()
-
-        def write(self, data):
-            self.f.write(data[:len(data) // 2])
-            raise OSError(28, 'No space left on device (simulated)')
-    monkeypatch.setattr(P.os, 'fdopen', lambda fd, mode: HalfWriter(realFdopen(fd, mode)))
-    with pytest.raises(OSError, match='simulated'):
+    def toFullDisk(self, fd, xml, fileName):
+        with open('/dev/full', 'wb') as full:
+            realSave(self, full.fileno(), xml, fileName)
+    monkeypatch.setattr(P.Omega, '_saveToFd', toFullDisk)
+    with pytest.raises(OSError, match='No space left on device') as info:
         O.save(str(path))
+    assert info.value.errno == 28 and info.value.filename == str(path)
     assert path.read_bytes() == new
     assert temporaries(tmp_path) == []
     monkeypatch.undo()

@@ -18,6 +18,9 @@ struct AttrInfo {
     unsigned flags = 0;
     AttrKind kind;
     std::function<void*(Serializable&)> address; // where the member lives in an object
+    // Where its value can be read without making anything (a side record made when first written
+    // is not made: its defaults are read). The writer of saved files reads through it.
+    std::function<const void*(Serializable&)> peek;
     // For Ptr / PtrVector kinds: the pointee type and type-checked access.
     const std::type_info* pointee = nullptr;
     std::function<std::shared_ptr<Serializable>(void*)> getPtr;
@@ -81,6 +84,9 @@ private:
 // uses in a record of their own, out of the contact's record that the law streams every step.
 template <class T, class = void> struct HasSideRecord : std::false_type {};
 template <class T> struct HasSideRecord<T, std::void_t<decltype(T::hasSideRecord)>> : std::bool_constant<T::hasSideRecord> {};
+// ...and T::sidePeek(offset), where the value can be read without making the record (else: sideAddress).
+template <class T, class = void> struct HasSidePeek : std::false_type {};
+template <class T> struct HasSidePeek<T, std::void_t<decltype(std::declval<T&>().sidePeek(std::ptrdiff_t()))>> : std::true_type {};
 
 // Classes whose objects may be views of another object of the same class (a contact's geometry
 // or physics kept in a ContactPool): T::viewTarget() is that object, or null (the object's own
@@ -127,8 +133,16 @@ template <class T> struct AttrCollector {
                         Serializable* target = static_cast<T&>(s).viewTarget();
                         return static_cast<T*>(target ? target : &s)->sideAddress(inRecord);
                     };
+                if constexpr (HasSidePeek<T>::value) {
+                    a.peek = [inRecord](Serializable& s) -> const void* {
+                        Serializable* target = nullptr;
+                        if constexpr (HasViewTarget<T>::value) target = static_cast<T&>(s).viewTarget();
+                        return static_cast<T*>(target ? target : &s)->sidePeek(inRecord);
+                    };
+                }
             }
         }
+        if (!a.peek) a.peek = [address = a.address](Serializable& s) -> const void* { return address(s); };
         if constexpr (AttrKindOf<M>::kind == AttrKind::Ptr) {
             using P = typename M::element_type;
             a.pointee = &typeid(P);

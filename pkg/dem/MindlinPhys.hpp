@@ -36,6 +36,7 @@ public:
     static constexpr bool hasSideRecord = true;
     const Extra* sideRecord() { return &extra.edit(); }
     void* sideAddress(std::ptrdiff_t offset) { return reinterpret_cast<char*>(&extra.edit()) + offset; }
+    const void* sidePeek(std::ptrdiff_t offset) const { return reinterpret_cast<const char*>(&extra.get()) + offset; }
     template <class V> void visit(V& v) {
         FrictPhys::visit(v);
         v.attr("kno", kno, "Constant of the normal stiffness: Fn = kno·u^(3/2), kno = 4/3·E*·sqrt(R*) [N/m^1.5]");

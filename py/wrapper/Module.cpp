@@ -9,6 +9,7 @@
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
 #include <map>
+#include <system_error>
 #include <lib/factory/ClassRegistry.hpp>
 #include <py/wrapper/ArraysWrapper.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
@@ -27,6 +28,17 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindAllClasses(m);
     pybind11::register_exception<yade::FormatError>(m, "FileFormatError", PyExc_ValueError);
     pybind11::register_exception<yade::StabilityError>(m, "StabilityError", PyExc_RuntimeError);
+    // A failed read or write of a file (a full disk): OSError with its errno, as Python's own I/O.
+    pybind11::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const std::system_error& e) {
+            // (the system's text for the errno, as Python's own I/O errors: O.save adds the file name)
+            PyObject* args = Py_BuildValue("(is)", e.code().value(), e.code().message().c_str());
+            PyErr_SetObject(PyExc_OSError, args);
+            Py_XDECREF(args);
+        }
+    });
     yade::bindOmega(m);
     yade::bindArrays(m);
     yade::bindShop(m);

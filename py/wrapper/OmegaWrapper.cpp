@@ -511,15 +511,34 @@ static TimeStepper* timeStepper() {
     return nullptr;
 }
 
-// Saves the current scene between two steps: directly from inside the loop (a PyRunner making a
-// checkpoint), otherwise by stopping a running loop and starting it again afterwards.
-std::string saveCurrentScene(bool xml) {
+// Runs save(scene) between two steps: directly from inside the loop (a PyRunner making a checkpoint),
+// otherwise by stopping a running loop and starting it again afterwards.
+template <class Save> void betweenSteps(Save save) {
     Omega& o = omega();
-    if (o.inLoopThread()) return SceneIO::save(o.scene(), xml);
+    if (o.inLoopThread()) return save(o.scene());
     const bool resume = o.interrupt();
-    std::string data = SceneIO::save(o.scene(), xml);
+    try {
+        save(o.scene());
+    } catch (...) {
+        if (resume) o.run(-1);
+        throw;
+    }
     if (resume) o.run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
+}
+std::string saveCurrentScene(bool xml) {
+    std::string data;
+    betweenSteps([&](Scene& s) { data = SceneIO::save(s, xml); });
     return data;
+}
+// Replaces the current scene by one loaded (labels bound again), or raises leaving it as it was.
+void loadScene(const std::function<std::shared_ptr<Scene>()>& load) {
+    std::shared_ptr<Scene> loaded;
+    {
+        py::gil_scoped_release nogil;
+        loaded = load(); // throws before anything changes
+        omega().setScene(loaded);
+    }
+    injectLabels(loaded->getEngines());
 }
 // Raises the error that stopped the loop as Python sees it (C++ exceptions translated as usual),
 // with a note naming where it arose (the engine with its label, the iteration).
@@ -784,15 +803,23 @@ void bindOmega(py::module_& m) {
                 return py::bytes(data);
             }, py::arg("xml") = false, "The scene as a saved file's content (binary or XML)")
             .def("_fromBytes", [](OmegaProxy&, py::bytes data) {
-                std::string s = data;
-                std::shared_ptr<Scene> loaded;
-                {
-                    py::gil_scoped_release nogil;
-                    loaded = SceneIO::load(s); // throws before anything changes
-                    omega().setScene(loaded);
-                }
-                injectLabels(loaded->getEngines());
-            }, "Replace the scene by one read from a saved file's content")
+                const std::string s = data;
+                loadScene([&] { return SceneIO::load(s); });
+            }, "Replace the scene by one read from a saved file's content (compressed or not)")
+            .def("_saveToFd", [](OmegaProxy&, int fd, bool xml, const std::string& fileName) {
+                py::gil_scoped_release nogil;
+                betweenSteps([&](Scene& s) { SceneIO::save(s, *fdSink(fd, codecForName(fileName)), xml); });
+            }, py::arg("fd"), py::arg("xml"), py::arg("fileName"),
+                    "Write the scene to an open file (binary or XML), compressed as the name says (.gz, .bz2, .zst)")
+            .def("_loadFromFd", [](OmegaProxy&, int fd) {
+                loadScene([&] { return SceneIO::load(*fdSource(fd)); });
+            }, py::arg("fd"), "Replace the scene by one read from an open file (any format and compression)")
+            .def_property_readonly_static("_codecs", [](py::object) {
+                std::vector<std::string> r;
+                for (Codec c : {Codec::gzip, Codec::bzip2, Codec::zstd})
+                    if (codecAvailable(c)) r.push_back(codecName(c));
+                return r;
+            }, "The compressions this build writes and reads")
             .def("saveTmp", [](OmegaProxy&, const std::string& slot, bool) {
                 py::gil_scoped_release nogil;
                 omega().tmpSlots[slot] = saveCurrentScene(false);
@@ -801,13 +828,8 @@ void bindOmega(py::module_& m) {
                 auto it = omega().tmpSlots.find(slot);
                 if (it == omega().tmpSlots.end())
                     throw std::runtime_error("Cannot load nonexistent memory-saved simulation :memory:" + slot + " (O.saveTmp first)");
-                std::shared_ptr<Scene> loaded;
-                {
-                    py::gil_scoped_release nogil;
-                    loaded = SceneIO::load(it->second);
-                    omega().setScene(loaded);
-                }
-                injectLabels(loaded->getEngines());
+                const std::string& data = it->second;
+                loadScene([&] { return SceneIO::load(data); });
             }, py::arg("mark") = "", py::arg("quiet") = false, "Load the scene saved by O.saveTmp under that slot name")
             .def("labeledEngine", [](OmegaProxy&, const std::string& label) {
                 std::set<Serializable*> seen;

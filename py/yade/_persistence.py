@@ -1,7 +1,6 @@
 """O.save, O.load and O.reload: files in the binary or XML format of doc/file-format.md,
-gzip- or bzip2-compressed when the name ends in .gz / .bz2."""
-import bz2
-import gzip
+gzip-, bzip2- or zstd-compressed when the name ends in .gz / .bz2 / .zst. The scene is streamed
+to and from the file by the C++ core (compressed as it goes), never held whole in memory."""
 import os
 import tempfile
 
@@ -12,32 +11,13 @@ _UMASK = os.umask(0)  # read once (os.umask can only be read by setting it)
 os.umask(_UMASK)
 
 
-def _compress(fileName, data):
-    if fileName.endswith('.gz'):
-        return gzip.compress(data)
-    if fileName.endswith('.bz2'):
-        return bz2.compress(data)
-    return data
-
-
-def _decompress(data):
-    try:
-        if data[:2] == b'\x1f\x8b':
-            return gzip.decompress(data)
-        if data[:3] == b'BZh':
-            return bz2.decompress(data)
-    except Exception as e:  # OSError, EOFError, zlib.error...: all mean a damaged file
-        raise FileFormatError('corrupt or truncated compressed file (%s: %s)' % (type(e).__name__, e))
-    return data
-
-
 def save(self, fileName, quiet=False):
-    """Save the scene: XML if the name contains 'xml', binary otherwise; compressed for .gz/.bz2.
+    """Save the scene: XML if the name contains 'xml', binary otherwise; compressed for .gz/.bz2/.zst.
     The file is written to a temporary beside the target, flushed to the disk and renamed, so a
     failure (a full disk, a process killed half-way) leaves the previous file as it was; an error
     is an OSError that names the file."""
     fileName = os.fspath(fileName)
-    data = _compress(fileName, self._toBytes('xml' in os.path.basename(fileName)))
+    xml = 'xml' in os.path.basename(fileName)
     directory = os.path.dirname(os.path.abspath(fileName))
     prefix = '.' + os.path.basename(fileName) + '.'
     try:
@@ -47,8 +27,7 @@ def save(self, fileName, quiet=False):
         raise OSError(e.errno, e.strerror, fileName) from None
     try:
         with os.fdopen(fd, 'wb') as f:
-            f.write(data)
-            f.flush()
+            self._saveToFd(f.fileno(), xml, fileName)
             os.fsync(f.fileno())  # the content is on the disk before the name points to it
         os.chmod(tmp, 0o666 & ~_UMASK)  # mkstemp makes it private; give the usual permissions
         os.replace(tmp, fileName)
@@ -105,11 +84,14 @@ def load(self, fileName, quiet=False):
         loadTmp(self, fileName[len(_MEMORY):])
         return
     with open(fileName, 'rb') as f:
-        data = f.read()
-    try:
-        self._fromBytes(_decompress(data))
-    except FileFormatError as e:
-        raise FileFormatError('%s: %s' % (fileName, e)) from None
+        try:
+            self._loadFromFd(f.fileno())
+        except FileFormatError as e:
+            raise FileFormatError('%s: %s' % (fileName, e)) from None
+        except OSError as e:
+            if e.filename is None:
+                raise OSError(e.errno, e.strerror, fileName) from None  # (a read error names no file)
+            raise
     _lastFile[0] = fileName
 
 
@@ -154,7 +136,7 @@ def stringToScene(self, data, mark=''):
     """Replace the scene by one from O.sceneToString (bytes; str is taken as XML text)."""
     if isinstance(data, str):
         data = data.encode('utf-8')
-    self._fromBytes(_decompress(data))
+    self._fromBytes(data)
 
 
 def tmpToFile(self, fileName, mark=''):

@@ -1,8 +1,11 @@
 """Mutations of saved scenes (doc/file-format.md), for scripts/fuzz/fuzz_loader.py.
 
-A saved file is decoded into the same tree of nodes the C++ reader builds (tag, attributes, text,
+An XML file is decoded into the same tree of nodes the C++ reader builds (tag, attributes, text,
 children), mutated at the level of that tree (numbers, versions, tags, classes, ids, counts,
-duplicated or removed children), encoded again (binary or XML), then possibly damaged byte by
+duplicated or removed children), encoded again (XML, or the binary tree of format version 1,
+which the reader still reads). A binary file (the block format) is cut into its blocks, whose
+payloads are damaged, dropped, duplicated or swapped, and whose checksums are then made right, so
+that the damage reaches the checks of the content. Either is then possibly damaged byte by
 byte (truncation, bit flips, inserted or removed bytes) and compressed (gzip, bzip2), and the
 compressed stream itself possibly damaged. Everything is drawn from one random.Random, so a case
 is replayed from its seed.
@@ -14,7 +17,11 @@ import gzip
 import random
 import xml.etree.ElementTree as ET
 
-BINARY_MAGIC = b'YADE-CLONE-BINARY\n'
+import struct
+import zlib
+
+BINARY_MAGIC = b'YADE-CLONE-BINARY\n'  # the tree (format version 1)
+BLOCKS_MAGIC = b'YADE-CLONE-BLOCKS\n'  # the block format (version 2)
 XML_HEADER = b'<?xml version="1.0" encoding="UTF-8"?>\n'
 
 # Values that break readers: integer limits, non-finite and extreme floats, junk.
@@ -422,6 +429,134 @@ def duplicateBytes(rng, data):
 BYTE_MUTATIONS = [truncate, flipBits, flipBits, insertBytes, deleteBytes, duplicateBytes]
 
 
+# ------------------------------------------------------------------ mutations of blocks
+
+def splitBlocks(data):
+    """[(type, payload)] of a file in the block format (up to where it stops making sense)."""
+    out, i = [], len(BLOCKS_MAGIC)
+    while i + 16 <= len(data):
+        kind, n, _ = struct.unpack_from('<4sQI', data, i)
+        out.append((kind, data[i + 16:i + 16 + n]))
+        i += 16 + n
+    return out
+
+
+def joinBlocks(blocks):
+    return BLOCKS_MAGIC + b''.join(struct.pack('<4sQI', k, len(p), zlib.crc32(p)) + p for k, p in blocks)
+
+
+SPECIAL_REALS = [float('nan'), float('inf'), -float('inf'), -1.0, 0.0, -0.0, 1e308, 5e-324, 2.0 ** 31, -2.0 ** 63]
+SPECIAL_WORDS = [0, 1, 2 ** 31 - 1, 2 ** 31, 2 ** 32 - 1, 4096, 4097, 65536]
+
+
+def damagePayload(rng, blocks):
+    i = rng.randrange(len(blocks))
+    kind, payload = blocks[i]
+    if not payload:
+        return 'block %d (%s) empty, left' % (i, kind.decode('latin-1'))
+    choice = rng.randrange(4)
+    if choice == 0 and len(payload) >= 8:  # a number: a special real where one may be
+        at = rng.randrange(len(payload) - 7)
+        payload = payload[:at] + struct.pack('<d', rng.choice(SPECIAL_REALS)) + payload[at + 8:]
+        what = 'special real at %d' % at
+    elif choice == 1 and len(payload) >= 4:  # a count, an id, a size
+        at = rng.randrange(len(payload) - 3)
+        payload = payload[:at] + struct.pack('<I', rng.choice(SPECIAL_WORDS)) + payload[at + 4:]
+        what = 'special word at %d' % at
+    elif choice == 2:  # one byte
+        at = rng.randrange(len(payload))
+        payload = payload[:at] + bytes([rng.randrange(256)]) + payload[at + 1:]
+        what = 'byte at %d' % at
+    else:
+        payload, what = rng.choice(BYTE_MUTATIONS)(rng, payload)
+    blocks[i] = (kind, payload)
+    return 'block %d (%s): %s' % (i, kind.decode('latin-1'), what)
+
+
+def reorderBlocks(rng, blocks):
+    i, j = rng.randrange(len(blocks)), rng.randrange(len(blocks))
+    choice = rng.randrange(4)
+    if choice == 0:
+        del blocks[i]
+        return 'block %d dropped' % i
+    if choice == 1:
+        blocks.insert(j, blocks[i])
+        return 'block %d repeated at %d' % (i, j)
+    if choice == 2:
+        blocks[i], blocks[j] = blocks[j], blocks[i]
+        return 'blocks %d and %d swapped' % (i, j)
+    kind, payload = blocks[i]
+    blocks[i] = (rng.choice([b'HEAD', b'TABL', b'ROWS', b'LIST', b'PAIR', b'POOL', b'CONT', b'PERM', b'END ', b'XXXX']), payload)
+    return 'block %d (%s) given the type %s' % (i, kind.decode('latin-1'), blocks[i][0].decode('latin-1'))
+
+
+# The kinds of attributes (AttrKind, lib/serialization/Attr.hpp, in its order): bytes of a value in a
+# column, 0 for the kinds of variable length.
+KIND_NAMES = ['Bool', 'Int', 'Long', 'Real', 'String', 'Vector2r', 'Vector2i', 'Vector3r', 'Vector3i', 'Vector6r',
+              'Matrix3r', 'Quaternionr', 'IntVector', 'RealVector', 'StringVector', 'Vector3rVector', 'Ptr', 'PtrVector']
+KIND_WIDTH = [1, 4, 8, 8, 0, 16, 8, 24, 12, 48, 72, 32, 0, 0, 0, 0, 8, 0]
+_ITEM_WIDTH = {'IntVector': 4, 'RealVector': 8, 'Vector3rVector': 24, 'PtrVector': 8}
+
+
+def _skipVariable(p, i, kind):
+    name = KIND_NAMES[kind]
+    if name == 'String':
+        return _readString(p, i)[1]
+    n, i = _readSize(p, i)
+    if name == 'StringVector':
+        for _ in range(n):
+            i = _readString(p, i)[1]
+        return i
+    return i + n * _ITEM_WIDTH[name]
+
+
+def editColumn(data, cls, attr, value):
+    """A file in the block format with the value of attribute attr of the first object of class cls
+    (in its first rows block) replaced by `value`, bytes as the column holds one row (for a column
+    with one value for all the rows: that value), checksums right. Returns (bytes, kind name)."""
+    blocks = splitBlocks(data)
+    tables = {}
+    for b, (kind, p) in enumerate(blocks):
+        if kind == b'TABL':
+            key, i = _readSize(p, 0)
+            name, i = _readString(p, i)
+            n, i = _readSize(p, i)
+            schema = []
+            for _ in range(n):
+                a, i = _readString(p, i)
+                schema.append((a.decode(), p[i]))
+                i += 1
+            tables[key] = (name.decode(), schema)
+        elif kind == b'ROWS':
+            key, i = _readSize(p, 0)
+            _, i = _readSize(p, i)
+            n, i = _readSize(p, i)
+            name, schema = tables[key]
+            if name != cls:
+                continue
+            for a, k in schema:
+                mode, start = p[i], i + 1
+                w = KIND_WIDTH[k]
+                if w:
+                    end, i = start + w, start + (w if mode == 1 else n * w)
+                else:
+                    end = _skipVariable(p, start, k)
+                    i = start
+                    for _ in range(n):
+                        i = _skipVariable(p, i, k)
+                if a == attr:
+                    blocks[b] = (kind, p[:start] + value + p[end:])
+                    return joinBlocks(blocks), KIND_NAMES[k]
+    raise LookupError('%s.%s not in the file' % (cls, attr))
+
+
+def mutateBlocks(rng, data):
+    """(bytes, description): blocks damaged, their checksums right."""
+    blocks = splitBlocks(data)
+    steps = [(damagePayload if rng.random() < .75 else reorderBlocks)(rng, blocks) for _ in range(rng.choice([1, 1, 2]))]
+    return joinBlocks(blocks), '; '.join(steps)
+
+
 def compress(rng, data):
     """(bytes, file name suffix, description): uncompressed, gzip or bzip2."""
     kind = rng.choice(['', '', '.gz', '.bz2'])
@@ -442,7 +577,7 @@ def whole(rng, seeds):
     if kind == 1:
         return bytes(rng.randrange(256) for _ in range(rng.choice([1, 17, 1000]))), 'random bytes'
     if kind == 2:
-        return BINARY_MAGIC + bytes(rng.randrange(256) for _ in range(rng.choice([0, 1, 5, 100]))), 'binary magic + random'
+        return rng.choice([BINARY_MAGIC, BLOCKS_MAGIC]) + bytes(rng.randrange(256) for _ in range(rng.choice([0, 1, 5, 16, 100]))), 'binary magic + random'
     if kind == 3:
         return XML_HEADER + rng.choice([b'', b'<', b'<yade', b'<yade/>', b'<yade formatVersion="1"/>',
                                         b'<yade formatVersion="1"><scene/></yade>', b'\xff\xfe']), 'XML header + fragment'
@@ -454,7 +589,7 @@ def whole(rng, seeds):
         return gzip.compress(gzip.compress(rng.choice(seeds))), 'gzip of gzip'
     if kind == 7:
         return rng.choice([b'\x1f\x8b', b'BZh', b'BZh9', b'\x1f\x8b\x08\x00']), 'compression magic alone'
-    return rng.choice(seeds) + rng.choice([b'\x00', b' ', b'\n<x/>', BINARY_MAGIC]), 'trailing bytes after a valid scene'
+    return rng.choice(seeds) + rng.choice([b'\x00', b' ', b'\n<x/>', BINARY_MAGIC, b'END ' + bytes(12)]), 'trailing bytes after a valid scene'
 
 
 def makeCase(rng, seeds):
@@ -465,7 +600,12 @@ def makeCase(rng, seeds):
         return data, rng.choice(['', '.gz', '.bz2', '.xml']), what
     seed = rng.choice(seeds)
     steps = []
-    if rng.random() < .75:  # mutate the tree: gets past the byte-level checks into the scene reader
+    if seed.startswith(BLOCKS_MAGIC):
+        data = seed
+        if rng.random() < .75:  # damage the blocks under right checksums: gets into the scene reader
+            data, what = mutateBlocks(rng, data)
+            steps.append(what)
+    elif rng.random() < .75:  # mutate the tree: gets past the byte-level checks into the scene reader
         root, encoding = decodedCopy(seed)
         if rng.random() < .3:
             encoding = 'binary' if encoding == 'xml' else 'xml'
