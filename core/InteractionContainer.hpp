@@ -156,7 +156,8 @@ public:
     Record* record(size_t k) { return recordOf[k] == noRecord ? nullptr : &records[recordOf[k]]; }
     const Record* record(size_t k) const { return recordOf[k] == noRecord ? nullptr : &records[recordOf[k]]; }
     void prepareRecords(); // room for a record per pair, so that the loop makes them without moving any
-    // Incremented by every insert, erase and clear (the order of the entries changed).
+    // Incremented by every insert, erase and clear (the order of the entries changed). A scene just
+    // loaded from a file has 0 (InteractionLoop::threadSplit applies only then).
     long long changes = 0;
 
 private:

@@ -309,6 +309,7 @@ public:
         }
         char extra;
         if (in.read(&extra, 1)) throw FormatError("corrupt file (extra bytes after the scene)");
+        s->interactions.changes = 0; // (a scene just loaded: see InteractionContainer::changes)
         return s;
     }
 

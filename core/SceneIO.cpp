@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <charconv>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
@@ -39,96 +41,200 @@ int toInt(Real x, const std::string& where) {
     return (int)x;
 }
 
-// Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count).
+// Whitespace-separated numbers of a text field, exactly n of them (n < 0: any count); each token must
+// be a whole number ("0.05xyz" is refused).
 std::vector<Real> numbers(const std::string& text, long n, const std::string& what) {
     std::vector<Real> r;
-    std::istringstream in(text);
-    std::string tok;
-    while (in >> tok) r.push_back(parseReal(tok));  // each token must be a whole number
+    if (n > 0) r.reserve(n);
+    const char* p = text.c_str();
+    for (;;) {
+        while (std::isspace(static_cast<unsigned char>(*p))) ++p;
+        if (!*p) break;
+        char* end = nullptr;
+        const Real x = std::strtod(p, &end);
+        if (end == p || (*end && !std::isspace(static_cast<unsigned char>(*end)))) {
+            const char* stop = p;
+            while (*stop && !std::isspace(static_cast<unsigned char>(*stop))) ++stop;
+            throw FormatError("expected a number, found '" + std::string(p, stop).substr(0, 40) + "'");
+        }
+        r.push_back(x);
+        p = end;
+    }
     if (n >= 0 && (long)r.size() != n)
         throw FormatError(what + ": expected " + std::to_string(n) + " numbers, found " + std::to_string(r.size()));
     return r;
 }
 
-std::string joined(const Real* x, int n) {
-    std::string s;
-    for (int i = 0; i < n; ++i) s += (i ? " " : "") + fmt(x[i]);
-    return s;
-}
-
-class Writer {
+// Writes the objects of a scene as XML text (doc/file-format.md, "XML encoding"), straight into a
+// buffer that goes to the sink every megabyte: no tree of the whole scene. Objects more than one
+// pointer holds are numbered, marked shared="1" and written once (then <ref id="N"/>); the others
+// cannot be met twice and are not remembered.
+class XmlWriter {
 public:
-    Node write(const std::shared_ptr<Serializable>& obj) {
-        if (!obj) return Node("null");
-        auto it = ids.find(obj.get());
-        if (it != ids.end()) {
-            Node r("ref");
-            r.attrs["id"] = std::to_string(it->second);
-            return r;
+    explicit XmlWriter(ByteSink& sink) : out(sink) {}
+    std::string buf;
+
+    void flushIfFull() {
+        if (buf.size() < (size_t(1) << 20)) return;
+        out.write(buf.data(), buf.size());
+        buf.clear();
+    }
+    void finish() {
+        out.write(buf.data(), buf.size());
+        buf.clear();
+        out.close();
+    }
+    void indent(int depth) { buf.append(depth, ' '); }
+    void text(const std::string& s) {
+        for (char c : s) switch (c) {
+                case '<': buf += "&lt;"; break;
+                case '>': buf += "&gt;"; break;
+                case '&': buf += "&amp;"; break;
+                case '"': buf += "&quot;"; break;
+                default: buf += c;
+            }
+    }
+    // The shortest text that reads back to the same bits (nan, inf, -inf as such).
+    void number(Real x) {
+        char b[32];
+        buf.append(b, std::to_chars(b, b + sizeof b, x).ptr);
+    }
+    void numbers(const Real* x, int n) {
+        for (int i = 0; i < n; ++i) {
+            if (i) buf += ' ';
+            number(x[i]);
         }
-        const int id = (int)ids.size();
-        ids[obj.get()] = id;
+    }
+    template <class I> void integer(I x) {
+        char b[24];
+        buf.append(b, std::to_chars(b, b + sizeof b, x).ptr);
+    }
+    void open(const char* tag, int depth) {
+        indent(depth);
+        buf += '<';
+        buf += tag;
+        buf += ">\n";
+    }
+    void close(const char* tag, int depth) {
+        indent(depth);
+        buf += "</";
+        buf += tag;
+        buf += ">\n";
+    }
+
+    // extraOwners: pointers to obj the caller holds as copies (they do not make it shared).
+    void object(const std::shared_ptr<Serializable>& obj, long extraOwners, int depth) {
+        indent(depth);
+        if (!obj) {
+            buf += "<null/>\n";
+            return;
+        }
+        const auto it = shared.find(obj.get());
+        if (it != shared.end()) {
+            buf += "<ref id=\"";
+            integer(it->second);
+            buf += "\"/>\n";
+            return;
+        }
+        const long id = nextId++;
+        const bool isShared = obj.use_count() > 1 + extraOwners;
+        if (isShared) shared.emplace(obj.get(), id);
         obj->preSave();
         const ClassInfo& info = ClassRegistry::instance().get(typeid(*obj));
-        Node n("obj");
-        n.attrs["class"] = info.name;
-        n.attrs["id"] = std::to_string(id);
+        buf += "<obj class=\"";
+        buf += info.name;
+        buf += "\" id=\"";
+        integer(id);
+        buf += isShared ? "\" shared=\"1\">\n" : "\">\n";
         for (const AttrInfo& a : info.attrs) {
             if (a.has(Attr::noSave)) continue;
-            Node& v = n.add("a");
-            v.attrs["name"] = a.name;
-            writeValue(v, a, a.address(*obj));
+            indent(depth + 1);
+            buf += "<a name=\"";
+            buf += a.name;
+            buf += '"';
+            value(a, const_cast<void*>(a.peek(*obj)), depth + 1);
         }
         obj->postSave();
-        return n;
+        close("obj", depth);
     }
 
 private:
-    std::unordered_map<const Serializable*, int> ids;
-    void writeValue(Node& v, const AttrInfo& a, void* p) {
+    ByteSink& out;
+    std::unordered_map<const Serializable*, long> shared;
+    long nextId = 0;
+
+    // The rest of <a name="..." : ">text</a>", "/>" when empty, or children.
+    void value(const AttrInfo& a, void* p, int depth) {
+        if ((a.kind == AttrKind::StringVector && static_cast<std::vector<std::string>*>(p)->empty())
+                || (a.kind == AttrKind::PtrVector && a.getPtrVector(p).empty())) {
+            buf += "/>\n";
+            return;
+        }
+        const size_t start = buf.size();
+        buf += '>';
+        const size_t content = buf.size();
         switch (a.kind) {
-            case AttrKind::Bool: v.text = *static_cast<bool*>(p) ? "1" : "0"; break;
-            case AttrKind::Int: v.text = std::to_string(*static_cast<int*>(p)); break;
-            case AttrKind::Long: v.text = std::to_string(*static_cast<long long*>(p)); break;
-            case AttrKind::Real: v.text = fmt(*static_cast<Real*>(p)); break;
-            case AttrKind::String: v.text = *static_cast<std::string*>(p); break;
-            case AttrKind::Vector2r: v.text = joined(static_cast<Vector2r*>(p)->data(), 2); break;
-            case AttrKind::Vector3r: v.text = joined(static_cast<Vector3r*>(p)->data(), 3); break;
-            case AttrKind::Vector6r: v.text = joined(static_cast<Vector6r*>(p)->data(), 6); break;
-            case AttrKind::Matrix3r: v.text = joined(static_cast<Matrix3r*>(p)->data(), 9); break; // column-major
-            case AttrKind::Quaternionr: v.text = joined(static_cast<Quaternionr*>(p)->coeffs().data(), 4); break; // x y z w
+            case AttrKind::Bool: buf += *static_cast<bool*>(p) ? '1' : '0'; break;
+            case AttrKind::Int: integer(*static_cast<int*>(p)); break;
+            case AttrKind::Long: integer(*static_cast<long long*>(p)); break;
+            case AttrKind::Real: number(*static_cast<Real*>(p)); break;
+            case AttrKind::String: text(*static_cast<std::string*>(p)); break;
+            case AttrKind::Vector2r: numbers(static_cast<Vector2r*>(p)->data(), 2); break;
+            case AttrKind::Vector3r: numbers(static_cast<Vector3r*>(p)->data(), 3); break;
+            case AttrKind::Vector6r: numbers(static_cast<Vector6r*>(p)->data(), 6); break;
+            case AttrKind::Matrix3r: numbers(static_cast<Matrix3r*>(p)->data(), 9); break; // column-major
+            case AttrKind::Quaternionr: numbers(static_cast<Quaternionr*>(p)->coeffs().data(), 4); break; // x y z w
             case AttrKind::Vector2i: {
                 const auto& x = *static_cast<Vector2i*>(p);
-                v.text = std::to_string(x[0]) + " " + std::to_string(x[1]);
+                integer(x[0]), buf += ' ', integer(x[1]);
                 break;
             }
             case AttrKind::Vector3i: {
                 const auto& x = *static_cast<Vector3i*>(p);
-                v.text = std::to_string(x[0]) + " " + std::to_string(x[1]) + " " + std::to_string(x[2]);
+                integer(x[0]), buf += ' ', integer(x[1]), buf += ' ', integer(x[2]);
                 break;
             }
             case AttrKind::IntVector:
-                for (int x : *static_cast<std::vector<int>*>(p)) v.text += std::to_string(x) + " ";
+                for (int x : *static_cast<std::vector<int>*>(p)) integer(x), buf += ' ';
                 break;
             case AttrKind::RealVector:
-                for (Real x : *static_cast<std::vector<Real>*>(p)) v.text += fmt(x) + " ";
+                for (Real x : *static_cast<std::vector<Real>*>(p)) number(x), buf += ' ';
                 break;
             case AttrKind::Vector3rVector:
-                for (const auto& x : *static_cast<std::vector<Vector3r>*>(p)) v.text += joined(x.data(), 3) + " ";
+                for (const auto& x : *static_cast<std::vector<Vector3r>*>(p)) numbers(x.data(), 3), buf += ' ';
                 break;
             case AttrKind::StringVector:
-                for (const auto& x : *static_cast<std::vector<std::string>*>(p)) v.add("s").text = x;
+                buf += '\n';
+                for (const auto& x : *static_cast<std::vector<std::string>*>(p)) {
+                    indent(depth + 1);
+                    buf += "<s>";
+                    text(x);
+                    buf += "</s>\n";
+                }
+                indent(depth);
                 break;
-            case AttrKind::Ptr: v.children.push_back(write(a.getPtr(p))); break;
+            case AttrKind::Ptr:
+                buf += '\n';
+                object(a.getPtr(p), 1, depth + 1);
+                indent(depth);
+                break;
             case AttrKind::PtrVector:
-                for (const auto& x : a.getPtrVector(p)) v.children.push_back(write(x));
+                buf += '\n';
+                for (const auto& x : a.getPtrVector(p)) object(x, 1, depth + 1);
+                indent(depth);
                 break;
         }
+        if (buf.size() == content) { // (no text: <a name="x"/>)
+            buf.resize(start);
+            buf += "/>\n";
+        } else buf += "</a>\n";
     }
 };
 
 class Reader {
 public:
+    // keepAll: every object may be referenced later (format version 1); else only those marked shared="1"
+    bool keepAll = true;
     std::shared_ptr<Serializable> read(const Node& n) {
         if (n.tag == "null") return nullptr;
         if (n.tag == "ref") {
@@ -141,7 +247,7 @@ public:
         const ClassInfo* info = ClassRegistry::instance().find(className);
         if (!info) throw FormatError("unknown class '" + className + "'");
         std::shared_ptr<Serializable> obj = info->factory();
-        objects[n.attr("id")] = obj;
+        if (keepAll || n.attrs.count("shared")) objects[n.attr("id")] = obj;
         for (const Node& v : n.children) {
             const AttrInfo* a = info->findAttr(v.attr("name"));
             if (!a) throw FormatError(className + " has no attribute '" + v.attr("name") + "'");
@@ -255,129 +361,256 @@ template <class T> std::shared_ptr<T> readAs(Reader& r, const Node& n, const cha
     return t;
 }
 
-} // namespace
+// Builds a scene from the sections of the tree, in the order they are written (doc/file-format.md,
+// "The tree"): from a whole tree (binary files of format version 1), or element by element as an
+// XML file streams. The current scene is never touched.
+class SceneBuilder {
+public:
+    std::shared_ptr<Scene> s = std::make_shared<Scene>();
 
-Node SceneIO::toNode(Scene& s) {
-    Node root("yade");
-    root.attrs["formatVersion"] = std::to_string(NodeIO::formatVersion);
-    Node& sc = root.add("scene");
-    sc.attrs["iter"] = std::to_string(s.iter);
-    sc.attrs["stopAtIter"] = std::to_string(s.stopAtIter);
-    sc.attrs["stopAtTime"] = fmt(s.stopAtTime);
-    sc.attrs["time"] = fmt(s.time);
-    sc.attrs["dt"] = fmt(s.dt);
-    sc.attrs["trackEnergy"] = s.trackEnergy ? "1" : "0";
-    sc.attrs["bodyChanges"] = std::to_string(s.bodies.changes);
-    Node& tags = sc.add("tags");
-    for (const auto& kv : s.tags) {
-        Node& t = tags.add("tag");
-        t.attrs["name"] = kv.first;
-        t.text = kv.second;
+    void root(const Node& yade) {
+        if (yade.tag != "yade") throw FormatError("not a saved scene (root element <" + yade.tag + ">)");
+        const int version = std::stoi(yade.attr("formatVersion"));
+        if (version < 1) throw FormatError("invalid format version " + std::to_string(version));
+        if (version > NodeIO::formatVersion)
+            throw FormatError("the file was written in format version " + std::to_string(version) + " by a newer build; this build reads up to version "
+                    + std::to_string(NodeIO::formatVersion));
+        r.keepAll = version < 2;
     }
-    Node& energy = sc.add("energy");
-    const auto names = s.energy.names();
-    const auto values = s.energy.values();
-    const auto cumulative = s.energy.cumulativeFlags();
-    for (size_t i = 0; i < names.size(); ++i) {
-        Node& t = energy.add("term");
-        t.attrs["name"] = names[i];
-        t.attrs["cumulative"] = cumulative[i] ? "1" : "0";
-        t.text = fmt(values[i]);
+    void scene(const Node& sc) {
+        s->iter = std::stoll(sc.attr("iter"));
+        s->stopAtIter = std::stoll(sc.attr("stopAtIter"));
+        if (sc.attrs.count("stopAtTime")) s->stopAtTime = parseReal(sc.attr("stopAtTime")); // (files written before it was saved lack it)
+        s->time = parseReal(sc.attr("time"));
+        s->setDt(parseReal(sc.attr("dt")));
+        s->trackEnergy = sc.attr("trackEnergy") == "1";
+        bodyChanges = std::stoll(sc.attr("bodyChanges"));
     }
-    Writer w;
-    Node& mats = sc.add("materials");
-    for (const auto& m : s.materials) mats.children.push_back(w.write(m));
-    Node& bodies = sc.add("bodies");
-    for (const auto& b : s.bodies) bodies.children.push_back(w.write(b));
-    Node& intrs = sc.add("interactions");
-    std::vector<std::shared_ptr<Interaction>> made; // objects of pairs that had none (alive until written: the writer knows objects by address)
-    for (size_t k = 0; k < s.interactions.size(); ++k) {
-        made.push_back(s.interactions.snapshot(k));
-        intrs.children.push_back(w.write(made.back()));
+    // A whole section of small size (tags, energy, permanent forces).
+    void section(const Node& n) {
+        if (isList(n.tag)) {
+            beginList(n.tag);
+            for (const Node& c : n.children) item(n.tag, c);
+            return;
+        }
+        seen(n.tag);
+        if (n.tag == "tags") {
+            s->tags.clear();
+            for (const Node& t : n.children) s->tags[utf8(t.attr("name"), "a tag")] = utf8(t.text, "a tag");
+        } else if (n.tag == "energy") {
+            for (const Node& t : n.children) s->energy.set(utf8(t.attr("name"), "an energy term"), parseReal(t.text), t.attr("cumulative") == "1");
+        } else if (n.tag == "permanentForces") {
+            needBodies("permanent forces");
+            for (const Node& f : n.children) {
+                const long id = std::stol(f.attr("id"));
+                if (id < 0 || id >= (long)s->bodies.size()) throw FormatError("a permanent force refers to a body that does not exist");
+                const auto x = numbers(f.text, 6, "permanent force");
+                s->forces.setPermForce((int)id, Vector3r(x[0], x[1], x[2]));
+                s->forces.setPermTorque((int)id, Vector3r(x[3], x[4], x[5]));
+            }
+        } else throw FormatError("<scene> has an unknown element <" + n.tag + ">");
     }
-    Node& engines = sc.add("engines");
-    for (const auto& e : s.getEngines()) engines.children.push_back(w.write(e));
-    Node& misc = sc.add("miscParams");
-    for (const auto& m : s.miscParams) misc.children.push_back(w.write(m));
-    Node& perm = sc.add("permanentForces");
-    for (size_t i = 0; s.forces.hasPermanent() && i < s.forces.size(); ++i) {
-        const Vector3r &f = s.forces.getPermForce((int)i), &t = s.forces.getPermTorque((int)i);
-        if (f == Vector3r::Zero() && t == Vector3r::Zero()) continue;
-        Node& n = perm.add("f");
-        n.attrs["id"] = std::to_string(i);
-        n.text = joined(f.data(), 3) + " " + joined(t.data(), 3);
+    // Sections of one object per child (materials, bodies, interactions, engines, miscParams).
+    static bool isList(const std::string& tag) {
+        return tag == "materials" || tag == "bodies" || tag == "interactions" || tag == "engines" || tag == "miscParams";
     }
-    return root;
-}
-
-std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
-    if (root.tag != "yade") throw FormatError("not a saved scene (root element <" + root.tag + ">)");
-    const int version = std::stoi(root.attr("formatVersion"));
-    if (version < 1) throw FormatError("invalid format version " + std::to_string(version));
-    if (version > NodeIO::formatVersion)
-        throw FormatError("the file was written in format version " + std::to_string(version) + " by a newer build; this build reads up to version "
-                + std::to_string(NodeIO::formatVersion));
-    const Node& sc = root.child("scene");
-    auto s = std::make_shared<Scene>();
-    s->iter = std::stoll(sc.attr("iter"));
-    s->stopAtIter = std::stoll(sc.attr("stopAtIter"));
-    if (sc.attrs.count("stopAtTime")) s->stopAtTime = parseReal(sc.attr("stopAtTime")); // (files written before it was saved lack it)
-    s->time = parseReal(sc.attr("time"));
-    s->setDt(parseReal(sc.attr("dt")));
-    s->trackEnergy = sc.attr("trackEnergy") == "1";
-    s->tags.clear();
-    for (const Node& t : sc.child("tags").children) s->tags[utf8(t.attr("name"), "a tag")] = utf8(t.text, "a tag");
-    for (const Node& t : sc.child("energy").children)
-        s->energy.set(utf8(t.attr("name"), "an energy term"), parseReal(t.text), t.attr("cumulative") == "1");
-    Reader r;
-    for (const Node& n : sc.child("materials").children) {
-        auto m = readAs<Material>(r, n, "a Material");
-        if (!m) throw FormatError("None in the list of materials");
-        s->materials.push_back(m);
+    void beginList(const std::string& tag) {
+        seen(tag);
+        if (tag == "interactions") needBodies("interactions");
     }
-    std::vector<std::shared_ptr<Body>> bodies;
-    for (const Node& n : sc.child("bodies").children) bodies.push_back(readAs<Body>(r, n, "a Body"));
-    try {
-        s->bodies.restore(std::move(bodies), std::stoll(sc.attr("bodyChanges")));
-    } catch (std::invalid_argument& e) {
-        throw FormatError(std::string("inconsistent bodies: ") + e.what());
-    }
-    s->interactions.resizeBodies(s->bodies.size());
-    s->forces.resize(s->bodies.size());
-    for (const Node& n : sc.child("interactions").children) {
-        auto I = readAs<Interaction>(r, n, "an Interaction");
-        if (!I || !s->bodies.exists(I->id1) || !s->bodies.exists(I->id2))
-            throw FormatError("an interaction refers to a body that does not exist");
-        if (!s->interactions.insert(I)) throw FormatError("the same interaction appears twice");
-    }
-    std::vector<std::shared_ptr<Engine>> engines;
-    for (const Node& n : sc.child("engines").children) {
-        auto e = readAs<Engine>(r, n, "an Engine");
-        if (!e) throw FormatError("None in the list of engines");
-        engines.push_back(e);
-    }
-    s->setEngines(engines);
-    if (const Node* misc = sc.find("miscParams")) // (files written before it was saved lack it)
-        for (const Node& n : misc->children) {
+    void item(const std::string& list, const Node& n) {
+        if (list == "materials") {
+            auto m = readAs<Material>(r, n, "a Material");
+            if (!m) throw FormatError("None in the list of materials");
+            s->materials.push_back(m);
+        } else if (list == "bodies") {
+            bodies.push_back(readAs<Body>(r, n, "a Body"));
+        } else if (list == "interactions") {
+            interaction(readAs<Interaction>(r, n, "an Interaction"));
+        } else if (list == "engines") {
+            auto e = readAs<Engine>(r, n, "an Engine");
+            if (!e) throw FormatError("None in the list of engines");
+            engines.push_back(e);
+        } else {
             auto m = readAs<Serializable>(r, n, "an object");
             if (!m) throw FormatError("None in O.miscParams");
             s->miscParams.push_back(m);
         }
-    for (const Node& n : sc.child("permanentForces").children) {
-        const long id = std::stol(n.attr("id"));
-        if (id < 0 || id >= (long)s->bodies.size()) throw FormatError("a permanent force refers to a body that does not exist");
-        const auto x = numbers(n.text, 6, "permanent force");
-        s->forces.setPermForce((int)id, Vector3r(x[0], x[1], x[2]));
-        s->forces.setPermTorque((int)id, Vector3r(x[3], x[4], x[5]));
     }
-    return s;
+    void endList(const std::string& tag) {
+        if (tag == "bodies") restoreBodies();
+    }
+    std::shared_ptr<Scene> finish() {
+        for (const char* required : {"tags", "energy", "materials", "bodies", "interactions", "engines", "permanentForces"})
+            if (!sections.count(required)) throw FormatError(std::string("<scene> lacks the element <") + required + ">");
+        s->setEngines(engines);
+        s->interactions.changes = 0; // (a scene just loaded: see InteractionContainer::changes)
+        return s;
+    }
+
+private:
+    Reader r;
+    std::set<std::string> sections;
+    std::vector<std::shared_ptr<Body>> bodies;
+    std::vector<std::shared_ptr<Engine>> engines;
+    long long bodyChanges = 0;
+    bool bodiesRestored = false;
+
+    void seen(const std::string& tag) {
+        if (!sections.insert(tag).second) throw FormatError("<scene> has two elements <" + tag + ">");
+    }
+    void needBodies(const char* what) {
+        if (!bodiesRestored) throw FormatError(std::string(what) + " before the bodies");
+    }
+    void restoreBodies() {
+        try {
+            s->bodies.restore(std::move(bodies), bodyChanges);
+        } catch (std::invalid_argument& e) {
+            throw FormatError(std::string("inconsistent bodies: ") + e.what());
+        }
+        bodies = {};
+        s->interactions.resizeBodies(s->bodies.size());
+        s->forces.resize(s->bodies.size());
+        bodiesRestored = true;
+    }
+    // A pair is an entry of the container; its contact joins the pool of its classes at once (no
+    // object is kept: a potential pair is only its ids), other geometry or physics wait for the next step.
+    void interaction(const std::shared_ptr<Interaction>& I) {
+        InteractionContainer& C = s->interactions;
+        if (!I || !s->bodies.exists(I->id1) || !s->bodies.exists(I->id2) || I->id1 == I->id2)
+            throw FormatError("an interaction refers to a body that does not exist");
+        if (!C.insertPotential(I->id1, I->id2)) throw FormatError("the same interaction appears twice");
+        const size_t k = C.size() - 1;
+        if (I->iterBorn >= 0) C.iterBorn[k] = I->iterBorn;
+        if (I->geom && I->phys) C.restoreContact(ContactPool::Header{I->id1, I->id2, (uint32_t)k, 0, I->iterMadeReal}, *I->geom, *I->phys);
+        else if (I->geom || I->phys) C.restoreUnpooled(k, I);
+    }
+};
+
+} // namespace
+
+std::shared_ptr<Scene> SceneIO::fromNode(const Node& root) {
+    SceneBuilder b;
+    b.root(root);
+    const Node& sc = root.child("scene");
+    b.scene(sc);
+    for (const Node& n : sc.children) {
+        b.section(n);
+        b.endList(n.tag);
+    }
+    return b.finish();
 }
 
+namespace {
+
+// An XML file as it streams: the sections of one object per child are read one object at a time.
+std::shared_ptr<Scene> loadXml(ByteSource& in, std::string prefix) {
+    XmlReader x(in, std::move(prefix));
+    x.declaration();
+    SceneBuilder b;
+    Node yade, sc, n;
+    bool empty = false;
+    if (!x.child(yade, empty, "")) x.fail("expected the root element");
+    b.root(yade);
+    if (empty || !x.child(sc, empty, "yade") || sc.tag != "scene") throw FormatError("<yade> lacks the element <scene>");
+    b.scene(sc);
+    bool sectionEmpty = false, itemEmpty = false;
+    while (!empty && x.child(n, sectionEmpty, "scene")) {
+        if (!SceneBuilder::isList(n.tag)) {
+            b.section(x.rest(n, sectionEmpty, 2));
+            continue;
+        }
+        b.beginList(n.tag);
+        Node item;
+        while (!sectionEmpty && x.child(item, itemEmpty, n.tag)) b.item(n.tag, x.rest(item, itemEmpty, 3));
+        b.endList(n.tag);
+    }
+    if (!x.child(n, empty, "yade")) { // (</yade>)
+        x.finish();
+        return b.finish();
+    }
+    x.fail("more than one element in <yade>");
+}
+
+void saveXml(Scene& s, ByteSink& out) {
+    XmlWriter w(out);
+    std::string& b = w.buf;
+    b = NodeIO::xmlDeclaration;
+    b += "<yade formatVersion=\"" + std::to_string(NodeIO::formatVersion) + "\">\n";
+    Node sc("scene"); // (its attributes in the order of their names, as the reader does not mind)
+    sc.attrs["bodyChanges"] = std::to_string(s.bodies.changes);
+    sc.attrs["dt"] = fmt(s.dt);
+    sc.attrs["iter"] = std::to_string(s.iter);
+    sc.attrs["stopAtIter"] = std::to_string(s.stopAtIter);
+    sc.attrs["stopAtTime"] = fmt(s.stopAtTime);
+    sc.attrs["time"] = fmt(s.time);
+    sc.attrs["trackEnergy"] = s.trackEnergy ? "1" : "0";
+    b += " <scene";
+    for (const auto& kv : sc.attrs) b += " " + kv.first + "=\"" + kv.second + "\"";
+    b += ">\n";
+    w.open("tags", 2);
+    for (const auto& kv : s.tags) {
+        b += "   <tag name=\"";
+        w.text(kv.first);
+        b += "\">";
+        w.text(kv.second);
+        b += "</tag>\n";
+    }
+    w.close("tags", 2);
+    w.open("energy", 2);
+    const auto names = s.energy.names();
+    const auto values = s.energy.values();
+    const auto cumulative = s.energy.cumulativeFlags();
+    for (size_t i = 0; i < names.size(); ++i) {
+        b += std::string("   <term cumulative=\"") + (cumulative[i] ? "1" : "0") + "\" name=\"";
+        w.text(names[i]);
+        b += "\">";
+        w.number(values[i]);
+        b += "</term>\n";
+    }
+    w.close("energy", 2);
+    w.open("materials", 2);
+    for (const auto& m : s.materials) w.object(m, 0, 3);
+    w.close("materials", 2);
+    w.open("bodies", 2);
+    for (const auto& body : s.bodies) {
+        w.object(body, 0, 3);
+        w.flushIfFull();
+    }
+    w.close("bodies", 2);
+    w.open("interactions", 2);
+    for (size_t k = 0; k < s.interactions.size(); ++k) {
+        w.object(s.interactions.snapshot(k), 1, 3);
+        w.flushIfFull();
+    }
+    w.close("interactions", 2);
+    w.open("engines", 2);
+    for (const auto& e : s.getEngines()) w.object(e, 0, 3);
+    w.close("engines", 2);
+    w.open("miscParams", 2);
+    for (const auto& m : s.miscParams) w.object(m, 0, 3);
+    w.close("miscParams", 2);
+    w.open("permanentForces", 2);
+    for (size_t i = 0; s.forces.hasPermanent() && i < s.forces.size(); ++i) {
+        const Vector3r &f = s.forces.getPermForce((int)i), &t = s.forces.getPermTorque((int)i);
+        if (f == Vector3r::Zero() && t == Vector3r::Zero()) continue;
+        b += "   <f id=\"" + std::to_string(i) + "\">";
+        w.numbers(f.data(), 3);
+        b += ' ';
+        w.numbers(t.data(), 3);
+        b += "</f>\n";
+    }
+    w.close("permanentForces", 2);
+    w.close("scene", 1);
+    w.close("yade", 0);
+    w.finish();
+}
+
+} // namespace
+
 void SceneIO::save(Scene& scene, ByteSink& out, bool xml) {
-    if (!xml) return SceneBlocks::write(scene, out);
-    const std::string text = NodeIO::toXml(toNode(scene));
-    out.write(text.data(), text.size());
-    out.close();
+    if (xml) saveXml(scene, out);
+    else SceneBlocks::write(scene, out);
 }
 
 std::string SceneIO::save(Scene& scene, bool xml) {
@@ -391,7 +624,8 @@ std::shared_ptr<Scene> SceneIO::load(ByteSource& in) {
         std::string data(SceneBlocks::magicSize, '\0');
         data.resize(in.read(&data[0], data.size()));
         if (data == SceneBlocks::magic) return SceneBlocks::read(in);
-        // the tree (XML, or binary files of format version 1): read whole, then parsed
+        if (data.compare(0, 5, "<?xml") == 0) return loadXml(in, std::move(data));
+        // binary files of format version 1 (or not a scene): read whole, then parsed
         char chunk[1 << 16];
         for (size_t n; (n = in.read(chunk, sizeof chunk)) > 0;) data.append(chunk, n);
         return fromNode(NodeIO::parse(data));

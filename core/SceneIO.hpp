@@ -10,8 +10,7 @@
 
 namespace yade {
 namespace SceneIO {
-    Node toNode(Scene& scene);
-    // Builds a new scene; throws FormatError (the current scene is never touched).
+    // Builds a new scene from a tree; throws FormatError (the current scene is never touched).
     std::shared_ptr<Scene> fromNode(const Node& root);
     // Writes the scene to `out` (closed at the end): the block format, or XML.
     void save(Scene& scene, ByteSink& out, bool xml);

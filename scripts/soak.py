@@ -18,8 +18,8 @@ fraction of the steps) in KiB per 10^5 steps, the RSS range, and whether the fin
 velocities, angular velocities, orientations, forces and torques of the two runs are equal byte
 for byte (if not, the normwise deviation of each). Exit status 0 when they are equal.
 
-With one thread they are; with several threads a reloaded run differs at rounding level
-(doc/reliability.md)."""
+They are, with one thread and with several (a loaded scene splits its pairs between the threads as
+the saved one did: doc/reliability.md)."""
 import argparse
 import os
 import sys

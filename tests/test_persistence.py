@@ -702,7 +702,7 @@ def test_encodings_and_compression_are_chosen_by_name_and_detected_by_content(tm
         raw[name] = (tmp_path / name).read_bytes()
     assert raw['scene.yade'].startswith(BINARY_MAGIC)
     xml = raw['scene.xml'].decode('utf-8')
-    assert xml.startswith('<?xml version="1.0" encoding="UTF-8"?>\n<yade formatVersion="1">')
+    assert xml.startswith('<?xml version="1.0" encoding="UTF-8"?>\n<yade formatVersion="2">')
     assert xml.rstrip().endswith('</yade>')
     assert gzip.decompress(raw['scene.yade.gz']).startswith(BINARY_MAGIC)
     assert gzip.decompress(raw['scene.xml.gz']).startswith(b'<?xml')
@@ -894,13 +894,13 @@ def test_xml_with_unknown_class_or_attribute(tmp_path, good):
 
 def test_newer_format_version_is_refused(tmp_path, good):
     xml = good['scene.xml'].decode()
-    assert '<yade formatVersion="1">' in xml
-    msg = refused(tmp_path, xml.replace('formatVersion="1"', 'formatVersion="99"', 1).encode())
+    assert '<yade formatVersion="2">' in xml
+    msg = refused(tmp_path, xml.replace('formatVersion="2"', 'formatVersion="99"', 1).encode())
     assert '99' in msg and 'version' in msg and 'newer' in msg
     # also through compression
-    refused(tmp_path, gzip.compress(xml.replace('formatVersion="1"', 'formatVersion="2"', 1).encode()))
-    refused(tmp_path, xml.replace(' formatVersion="1"', '', 1).encode())  # no version at all
-    refused(tmp_path, xml.replace('formatVersion="1"', 'formatVersion="one"', 1).encode())
+    refused(tmp_path, gzip.compress(xml.replace('formatVersion="2"', 'formatVersion="3"', 1).encode()))
+    refused(tmp_path, xml.replace(' formatVersion="2"', '', 1).encode())  # no version at all
+    refused(tmp_path, xml.replace('formatVersion="2"', 'formatVersion="one"', 1).encode())
 
 
 def test_corrupt_gzip_stream_raises_FileFormatError(tmp_path, good):

@@ -39,152 +39,160 @@ const Node& Node::child(const std::string& childTag) const {
     throw FormatError("<" + tag + "> lacks the element <" + childTag + ">");
 }
 
-// ---------------------------------------------------------------- XML
-static void escape(std::string& out, const std::string& s) {
-    for (char c : s) switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+// ---------------------------------------------------------------- XML, read as it streams
+
+XmlReader::XmlReader(ByteSource& source, std::string prefix) : in(source), s(std::move(prefix)) {}
+
+bool XmlReader::more() {
+    if (atEnd) return false;
+    char chunk[1 << 16];
+    const size_t n = in.read(chunk, sizeof chunk);
+    s.append(chunk, n);
+    atEnd = n < sizeof chunk;
+    return n > 0;
+}
+
+bool XmlReader::have(size_t n) {
+    while (s.size() - pos < n)
+        if (!more()) return false;
+    return true;
+}
+
+size_t XmlReader::find(char c) {
+    for (size_t from = pos;;) {
+        const size_t at = s.find(c, from);
+        if (at != std::string::npos) return at;
+        from = s.size();
+        if (!more()) return std::string::npos;
+    }
+}
+
+void XmlReader::fail(const std::string& what) const {
+    size_t line = 1 + linesBefore;
+    for (size_t i = 0; i < pos && i < s.size(); ++i) line += s[i] == '\n';
+    throw FormatError("corrupt XML at line " + std::to_string(line) + ": " + what);
+}
+
+void XmlReader::skipSpace() {
+    while (have(1) && std::isspace((unsigned char)s[pos])) ++pos;
+}
+
+std::string XmlReader::unescape(size_t from, size_t to) const {
+    std::string r;
+    r.reserve(to - from);
+    for (size_t i = from; i < to; ++i) {
+        if (s[i] != '&') {
+            r += s[i];
+            continue;
         }
+        const size_t semi = s.find(';', i);
+        if (semi == std::string::npos || semi >= to) throw FormatError("corrupt XML: unterminated entity");
+        const std::string ent = s.substr(i + 1, semi - i - 1);
+        if (ent == "lt") r += '<';
+        else if (ent == "gt") r += '>';
+        else if (ent == "amp") r += '&';
+        else if (ent == "quot") r += '"';
+        else throw FormatError("corrupt XML: unknown entity &" + ent + ";");
+        i = semi;
+    }
+    return r;
 }
 
-static void writeXml(std::string& out, const Node& n, int depth) {
-    out.append(depth, ' ');
-    out += "<" + n.tag;
-    for (const auto& a : n.attrs) {
-        out += " " + a.first + "=\"";
-        escape(out, a.second);
-        out += "\"";
-    }
-    if (n.text.empty() && n.children.empty()) {
-        out += "/>\n";
-        return;
-    }
-    out += ">";
-    escape(out, n.text);
-    if (!n.children.empty()) {
-        out += "\n";
-        for (const auto& c : n.children) writeXml(out, c, depth + 1);
-        out.append(depth, ' ');
-    }
-    out += "</" + n.tag + ">\n";
+std::string XmlReader::name() {
+    const size_t start = pos;
+    while (have(1) && (std::isalnum((unsigned char)s[pos]) || s[pos] == '_' || s[pos] == '.' || s[pos] == '-')) ++pos;
+    if (pos == start) fail("expected a name");
+    return s.substr(start, pos - start);
 }
 
-std::string NodeIO::toXml(const Node& root) {
-    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    writeXml(out, root, 0);
-    return out;
+void XmlReader::declaration() {
+    while (s.find("?>") == std::string::npos)
+        if (!more()) fail("bad XML declaration");
+    pos = s.find("?>") + 2;
+}
+
+// The attributes of a start tag after its name, to its end: false if it ends in "/>".
+bool XmlReader::startTag(Node& n) {
+    for (;;) {
+        skipSpace();
+        if (!have(1)) fail("unexpected end of file");
+        if (have(2) && s.compare(pos, 2, "/>") == 0) {
+            pos += 2;
+            return false;
+        }
+        if (s[pos] == '>') {
+            ++pos;
+            return true;
+        }
+        const std::string key = name();
+        skipSpace();
+        if (!have(2) || s[pos] != '=' || s[pos + 1] != '"') fail("expected =\"value\" after " + key);
+        pos += 2;
+        const size_t end = find('"');
+        if (end == std::string::npos) fail("unterminated attribute value");
+        n.attrs[key] = unescape(pos, end);
+        pos = end + 1;
+    }
+}
+
+bool XmlReader::closing(const std::string& tag) {
+    if (!have(2) || s.compare(pos, 2, "</") != 0) return false;
+    pos += 2;
+    if (name() != tag) fail("mismatched closing tag for <" + tag + ">");
+    skipSpace();
+    if (!have(1) || s[pos] != '>') fail("expected '>'");
+    ++pos;
+    return true;
+}
+
+bool XmlReader::child(Node& start, bool& empty, const std::string& parent) {
+    // (what was read before this child is dropped: a large file streams through a small buffer)
+    for (size_t i = 0; i < pos; ++i) linesBefore += s[i] == '\n';
+    s.erase(0, pos);
+    pos = 0;
+    const size_t lt = find('<');
+    if (lt == std::string::npos) fail("missing </" + parent + ">");
+    pos = lt;
+    if (closing(parent)) return false;
+    ++pos;
+    start = Node(name());
+    empty = !startTag(start);
+    return true;
+}
+
+Node XmlReader::rest(Node n, bool empty, int depth) {
+    if (empty) return n;
+    for (;;) { // text and children until the closing tag
+        const size_t lt = find('<');
+        if (lt == std::string::npos) fail("missing </" + n.tag + ">");
+        n.text += unescape(pos, lt);
+        pos = lt;
+        if (closing(n.tag)) {
+            if (!n.children.empty()) n.text.clear(); // indentation between children
+            return n;
+        }
+        n.children.push_back(element(depth + 1));
+    }
+}
+
+Node XmlReader::element(int depth) {
+    if (depth > NodeIO::maxDepth) fail("nesting too deep");
+    skipSpace();
+    if (!have(1) || s[pos] != '<') fail("expected '<'");
+    ++pos;
+    Node n(name());
+    const bool open = startTag(n);
+    return rest(std::move(n), !open, depth);
+}
+
+void XmlReader::finish() {
+    skipSpace();
+    if (have(1)) fail("extra content after the root element");
 }
 
 namespace {
-struct XmlParser {
-    const std::string& s;
-    size_t pos = 0;
-    [[noreturn]] void fail(const std::string& what) const {
-        size_t line = 1;
-        for (size_t i = 0; i < pos && i < s.size(); ++i) line += s[i] == '\n';
-        throw FormatError("corrupt XML at line " + std::to_string(line) + ": " + what);
-    }
-    void skipSpace() {
-        while (pos < s.size() && std::isspace((unsigned char)s[pos])) ++pos;
-    }
-    std::string unescape(const std::string& t) const {
-        std::string r;
-        for (size_t i = 0; i < t.size(); ++i) {
-            if (t[i] != '&') {
-                r += t[i];
-                continue;
-            }
-            const size_t semi = t.find(';', i);
-            const std::string ent = t.substr(i + 1, semi - i - 1);
-            if (semi == std::string::npos) throw FormatError("corrupt XML: unterminated entity");
-            if (ent == "lt") r += '<';
-            else if (ent == "gt") r += '>';
-            else if (ent == "amp") r += '&';
-            else if (ent == "quot") r += '"';
-            else throw FormatError("corrupt XML: unknown entity &" + ent + ";");
-            i = semi;
-        }
-        return r;
-    }
-    std::string name() {
-        const size_t start = pos;
-        while (pos < s.size() && (std::isalnum((unsigned char)s[pos]) || s[pos] == '_' || s[pos] == '.' || s[pos] == '-')) ++pos;
-        if (pos == start) fail("expected a name");
-        return s.substr(start, pos - start);
-    }
-    Node element(int depth = 0) {
-        if (depth > NodeIO::maxDepth) fail("nesting too deep");
-        skipSpace();
-        if (pos >= s.size() || s[pos] != '<') fail("expected '<'");
-        ++pos;
-        Node n(name());
-        for (;;) {
-            skipSpace();
-            if (pos >= s.size()) fail("unexpected end of file");
-            if (s.compare(pos, 2, "/>") == 0) {
-                pos += 2;
-                return n;
-            }
-            if (s[pos] == '>') {
-                ++pos;
-                break;
-            }
-            const std::string key = name();
-            skipSpace();
-            if (pos + 1 >= s.size() || s[pos] != '=' || s[pos + 1] != '"') fail("expected =\"value\" after " + key);
-            pos += 2;
-            const size_t end = s.find('"', pos);
-            if (end == std::string::npos) fail("unterminated attribute value");
-            n.attrs[key] = unescape(s.substr(pos, end - pos));
-            pos = end + 1;
-        }
-        for (;;) { // text and children until the closing tag
-            const size_t lt = s.find('<', pos);
-            if (lt == std::string::npos) fail("missing </" + n.tag + ">");
-            n.text += unescape(s.substr(pos, lt - pos));
-            pos = lt;
-            if (s.compare(pos, 2, "</") == 0) {
-                pos += 2;
-                if (name() != n.tag) fail("mismatched closing tag for <" + n.tag + ">");
-                skipSpace();
-                if (pos >= s.size() || s[pos] != '>') fail("expected '>'");
-                ++pos;
-                if (!n.children.empty()) n.text.clear(); // indentation between children
-                return n;
-            }
-            n.children.push_back(element(depth + 1));
-        }
-    }
-};
-
-// ---------------------------------------------------------------- binary
+// ---------------------------------------------------------------- binary (format version 1, read only)
 // sizes as unsigned LEB128 varints: 7 bits per byte, high bit set on all but the last byte
-void putSize(std::string& out, uint64_t v) {
-    do {
-        const unsigned char byte = (v & 0x7f) | (v > 0x7f ? 0x80 : 0);
-        out += static_cast<char>(byte);
-        v >>= 7;
-    } while (v);
-}
-void putString(std::string& out, const std::string& s) {
-    putSize(out, s.size());
-    out += s;
-}
-void writeBinary(std::string& out, const Node& n) {
-    putString(out, n.tag);
-    putSize(out, n.attrs.size());
-    for (const auto& a : n.attrs) {
-        putString(out, a.first);
-        putString(out, a.second);
-    }
-    putString(out, n.text);
-    putSize(out, n.children.size());
-    for (const auto& c : n.children) writeBinary(out, c);
-}
-
 struct BinaryReader {
     const std::string& s;
     size_t pos;
@@ -224,12 +232,6 @@ struct BinaryReader {
 };
 } // namespace
 
-std::string NodeIO::toBinary(const Node& root) {
-    std::string out = binaryMagic;
-    writeBinary(out, root);
-    return out;
-}
-
 Node NodeIO::parse(const std::string& data) {
     if (data.empty()) throw FormatError("empty file");
     if (data.compare(0, sizeof binaryMagic - 1, binaryMagic) == 0) {
@@ -239,13 +241,11 @@ Node NodeIO::parse(const std::string& data) {
         return n;
     }
     if (data.compare(0, sizeof xmlMagic - 1, xmlMagic) == 0) {
-        XmlParser p{data};
-        p.pos = data.find("?>");
-        if (p.pos == std::string::npos) p.fail("bad XML declaration");
-        p.pos += 2;
-        Node n = p.element();
-        p.skipSpace();
-        if (p.pos != data.size()) p.fail("extra content after the root element");
+        auto source = stringSource(data);
+        XmlReader p(*source, "");
+        p.declaration();
+        Node n = p.element(0);
+        p.finish();
         return n;
     }
     throw FormatError("not a saved scene (unknown format: neither the binary nor the XML header)");

@@ -228,7 +228,8 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     }
     std::vector<long> loads(threads + 1, 0); // [0]: the pairs not fixed yet; [1 + t]: thread t
     long* load = loads.data() + 1;
-    for (long k = 0; k < n; ++k) {
+    const bool saved = useSavedSplit(threads, n); // (a scene just loaded: split as it was saved)
+    for (long k = 0; k < n && !saved; ++k) {
         const Body::id_t a = intrs.pairIds[2 * k], b = intrs.pairIds[2 * k + 1];
         const int ta = owner[a], tb = owner[b], na = partners[a], nb = partners[b];
         const bool followA = ta == tb || nb > 4 * na + 16; // (b is a boundary, e.g. a facet touching many bodies: follow a)
@@ -236,7 +237,7 @@ void InteractionLoop::assignPairsToThreads(int threads) {
         fixed[k] = t;
         load[t] += intrs.wasReal[k] ? realWeight : 1;
     }
-    for (long k = 0; k < n; ++k) {
+    for (long k = 0; k < n && !saved; ++k) {
         const int ta = owner[intrs.pairIds[2 * k]], tb = owner[intrs.pairIds[2 * k + 1]], f = fixed[k];
         const int t = f >= 0 ? f : (load[tb] < load[ta] ? tb : ta);
         load[t] += (f < 0) * (intrs.wasReal[k] ? realWeight : 1);
@@ -278,6 +279,41 @@ void InteractionLoop::assignPairsToThreads(int threads) {
     threadPairsCount = (size_t)n; // the lists cover exactly 0 .. n-1
     ++threadPairsBuild;
 }
+
+bool InteractionLoop::useSavedSplit(int threads, long pairs) {
+    std::vector<int> saved;
+    saved.swap(threadSplit); // (used once: the next splits follow the pairs as they change)
+    // (only if the pairs did not change since the load, which left the count at 0: a change would
+    // have made the original split them anew too)
+    if (scene->interactions.changes != 0) return false;
+    long total = 0;
+    for (size_t i = 0; i + 1 < saved.size(); i += 2) {
+        if (saved[i] < 0 || saved[i] >= threads || saved[i + 1] < 0) return false;
+        total += saved[i + 1];
+    }
+    if (saved.empty() || saved.size() % 2 || total != pairs) return false;
+    uint32_t k = 0;
+    for (size_t i = 0; i < saved.size(); i += 2)
+        for (int j = 0; j < saved[i + 1]; ++j) threadPairs[saved[i]].push_back(k++);
+    return true;
+}
+
+void InteractionLoop::preSave() {
+    threadSplit.clear();
+    size_t total = 0;
+    for (const auto& list : threadPairs) total += list.size();
+    if (threadPairs.size() < 2 || total != threadPairsCount) return;
+    std::vector<int> threadOf(total, 0);
+    for (size_t t = 0; t < threadPairs.size(); ++t)
+        for (uint32_t k : threadPairs[t])
+            if (k < total) threadOf[k] = (int)t;
+    for (size_t k = 0; k < total; ++k) {
+        if (k == 0 || threadOf[k] != threadOf[k - 1]) threadSplit.insert(threadSplit.end(), {threadOf[k], 0});
+        ++threadSplit.back();
+    }
+}
+
+void InteractionLoop::postSave() { std::vector<int>().swap(threadSplit); }
 
 // Starts loading the first three cache lines of an object (none: null).
 static inline void prefetchObject(const void* p) {

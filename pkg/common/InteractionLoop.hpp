@@ -30,6 +30,11 @@ public:
     bool fastPath = true;
     bool fusedPasses = true;
     long long pairsTested = 0;
+    // How the pairs were split between the threads when the scene was saved, run-length encoded
+    // (thread, count of consecutive pairs, thread, count...): the first split after a load is that
+    // one, so that a loaded scene continues bit for bit with as many threads (the sums of the
+    // threads' forces round the same way). Empty except while saving and until that first split.
+    std::vector<int> threadSplit;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("geomDispatcher", geomDispatcher, "Ig2 functors: contact geometry from two shapes");
@@ -39,8 +44,11 @@ public:
         v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of existing contacts in one pass, two contacts at a time, where both functors are kernels (Ig2_Sphere_Sphere_ScGeom or Ig2_Facet_Sphere_ScGeom with any Law2 functor on ScGeom written as a kernel: doc/contact-laws.md): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
         v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
+        v.attr("threadSplit", threadSplit, "How the pairs were split between threads when saved (thread, count, ...): a loaded scene splits them the same way", Attr::hidden);
     }
     void action() override;
+    void preSave() override;  // threadSplit from the current split (with more than one thread)
+    void postSave() override; // threadSplit emptied
     // Throws std::invalid_argument explaining a broken chain (an Ig2 or Ip2 product no Law2 accepts).
     void checkFunctorChain() const;
 
@@ -152,6 +160,7 @@ private:
     std::vector<char> threadPairsScattered;
     static constexpr unsigned long long scatteredSpread = 2048;
     void assignPairsToThreads(int threads);
+    bool useSavedSplit(int threads, long pairs); // the split of threadSplit, if it fits (once)
     // Work stealing within a step (action()): per thread list, its entries to test and their chunks.
     static constexpr size_t chunkEntries = 256;
     struct ListWork {

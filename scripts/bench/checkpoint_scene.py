@@ -1,7 +1,7 @@
 # Checkpoint benchmark scene: times O.save / O.load / O.saveTmp+O.loadTmp of the dense lattice.
 # Runs unchanged in this engine and in the reference Yade:
 #     yade -n -x -j1 checkpoint_scene.py MODE N FILE
-#   MODE save  builds the lattice of N spheres (as /work/shared/bench/dense.py), runs 20 steps so that
+#   MODE save  builds the lattice of N spheres (dense.py beside this script), runs its 20 steps so that
 #              contacts exist, then times O.save(FILE) (the format follows FILE's suffix).
 #   MODE load  a fresh process: does NOT build anything; times O.load(FILE), then runs one step
 #              (untimed) to check that the loaded scene runs.
@@ -15,10 +15,12 @@
 # repository's build/yade); $CHECKPOINT_ENGINE overrides the name.
 import json, os, resource, sys, time
 import yade
-from yade import geom
+from yade import geom  # noqa: F401  (dense.py uses them)
 from yade.utils import *
 
 args = [a for a in sys.argv[1:] if not a.startswith('-') or a == '-']
+# (this script's folder: sys.argv[0] in both launchers; the reference's __file__ is its launcher)
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
 if len(args) < 2 or args[0] not in ('save', 'load', 'tmp'):
     sys.stderr.write("usage: checkpoint_scene.py save|load|tmp N FILE\n")
     sys.exit(2)
@@ -62,33 +64,12 @@ def report(op, seconds, **kw):
 
 
 def build():
-    # --- the scene of /work/shared/bench/dense.py (copied, not imported) ---
-    O.reset()
-    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600, label='mat'))
-    r = 0.01
-    a = 2 * r * 0.995                      # lattice spacing: overlap of 1 % of the radius
-    n = max(2, int(round(N ** (1. / 3.))))
-    nz = max(2, N // (n * n))
-    half = lambda m: ((m - 1) * a + 2 * r - 0.01 * r) / 2   # half the box's inner size along m spheres
-    c = lambda m: (m - 1) * a / 2
-    O.bodies.append(geom.facetBox((c(n), c(n), c(nz)), (half(n), half(n), half(nz)), wallMask=63))
-    for k in range(nz):
-        for j in range(n):
-            for i in range(n):
-                O.bodies.append(sphere((i * a, j * a, k * a), r))
-    O.engines = [
-        ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),
-        InteractionLoop(
-            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],
-            [Ip2_FrictMat_FrictMat_FrictPhys()],
-            [Law2_ScGeom_FrictPhys_CundallStrack()],
-        ),
-        NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.4),
-    ]
-    O.dt = .5 * PWaveTimeStep()
-    O.run(20, True)                        # untimed: contacts are created
-    # --- end of the copied scene ---
+    """The scene of dense.py beside this script (the repository's copy of shared/bench/dense.py), up to
+    and with its untimed 20 steps (the contacts are made), run here as its own text."""
+    src = open(os.path.join(HERE, 'dense.py')).read()
+    upTo = 'O.run(20, True)'
+    sys.argv = ['dense.py', str(N)]
+    exec(src[:src.index(upTo) + len(upTo)] + '\n', globals())
 
 
 if MODE == 'save':
