@@ -270,7 +270,7 @@ def save_simulation(tmp_path, name, stopAfter):
     return tmp_path / name
 
 
-@pytest.mark.parametrize("name", ["sim.xml", "sim.yade.gz", "sim.yade", "sim.xml.bz2"])
+@pytest.mark.parametrize("name", ["sim.xml", "sim.yade.gz", "sim.yade", "sim.xml.bz2", "sim.yade.zst"])
 def test_saved_simulation_with_x_runs_until_it_stops(tmp_path, name):
     sim = save_simulation(tmp_path, name, 20)
     (tmp_path / "ran.txt").unlink(missing_ok=True)
