@@ -130,7 +130,7 @@ private:
 
     // The roots of one list (null: None), then every object they lead to, table by table.
     void section(Section which, const std::vector<std::shared_ptr<Serializable>>& roots) {
-        for (size_t i = 0; i < roots.size() || i == 0; i += refsPerBlock) {
+        for (size_t i = 0; i < roots.size() || i == 0; i += refsPerBlock) { // (an empty list: one empty block)
             const size_t n = std::min(refsPerBlock, roots.size() - std::min(i, roots.size()));
             e.put<uint8_t>(which);
             e.size(n);
@@ -177,7 +177,8 @@ private:
     }
 
     // Pairs whose geometry or physics are outside a pool (a geometry before its physics), or whose
-    // object Python gave others that the next step takes: written as Interaction objects.
+    // object Python gave others that the next step takes: written as Interaction objects (and marked
+    // in leftPool, so that contacts() leaves their records out).
     std::vector<std::shared_ptr<Serializable>> unpooledInteractions() {
         const InteractionContainer& I = s.interactions;
         std::vector<std::shared_ptr<Serializable>> r;
