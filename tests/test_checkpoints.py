@@ -260,6 +260,8 @@ MEMORY = textwrap.dedent('''
 ''')
 
 
+@pytest.mark.skipif('libasan' in os.environ.get('LD_PRELOAD', ''),
+                    reason='under AddressSanitizer freed memory is held in quarantine: the peak says nothing of the writer')
 def test_saving_takes_little_memory_beyond_the_scene(tmp_path):
     names = ['s.yade', 's.yade.gz'] + (['s.yade.zst'] if 'zstd' in O._codecs else [])
     code = MEMORY % dict(n=8000, dense=DENSE, names=names, dir=str(tmp_path))

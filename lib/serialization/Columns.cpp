@@ -139,13 +139,15 @@ void readVariable(Cursor& c, const AttrInfo& a, void* p, RefReader* refs, const 
             const uint64_t n = c.count(sizeof(int));
             auto& v = *static_cast<std::vector<int>*>(p);
             v.resize(n);
-            std::memcpy(v.data(), c.bytes(n * sizeof(int)), n * sizeof(int));
+            const char* src = c.bytes(n * sizeof(int));
+            if (n) std::memcpy(v.data(), src, n * sizeof(int)); // (an empty vector's data() may be null)
             break;
         }
         case AttrKind::RealVector: {
             const uint64_t n = c.count(sizeof(Real));
             std::vector<Real> x(n);
-            std::memcpy(x.data(), c.bytes(n * sizeof(Real)), n * sizeof(Real));
+            const char* src = c.bytes(n * sizeof(Real));
+            if (n) std::memcpy(x.data(), src, n * sizeof(Real));
             auto& dst = *static_cast<std::vector<Real>*>(p);
             // (a list as long as the default one, e.g. the unset NaN vertices of Facet(), has its items as defaults)
             Validate::checkFlags(a, x.data(), dst.size() == x.size() ? dst.data() : nullptr, (int)x.size(), where);

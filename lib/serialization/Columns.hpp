@@ -14,7 +14,9 @@ namespace yade {
 // Appends little-endian fixed-width values, LEB128 sizes and strings to a buffer.
 struct Encoder {
     std::string& out;
-    void bytes(const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
+    void bytes(const void* p, size_t n) {
+        if (n) out.append(static_cast<const char*>(p), n); // (an empty vector's data() may be null)
+    }
     template <class T> void put(const T& x) { bytes(&x, sizeof x); }
     void size(uint64_t v);
     void string(const std::string& s) {
