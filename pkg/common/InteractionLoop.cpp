@@ -606,47 +606,117 @@ size_t InteractionLoop::settleContacts(Scratch& sc, size_t n, std::string& error
 }
 
 // Step 4 of processBatch: the forces, over runs of one Law2 functor (with its Ig2 functor in a
-// fast pass or not), in list order; contacts the law ends become potential.
+// fast pass or not), in list order.
 void InteractionLoop::applyLaws(Scratch& sc, size_t live, const BodyColumns& columns, std::string& error) {
-    InteractionContainer& intrs = scene->interactions;
     Scratch::Entry* const entries = sc.entries.data();
-    Contact* const contacts = sc.contacts.data();
-    char* const flags = sc.flags.data();
-    char* const wasReal = intrs.wasReal.data();
     for (size_t first = 0; first < live;) {
         LawFunctor* f = entries[first].law;
         IGeomFunctor* fused = entries[first].fused;
         size_t last = first;
         while (last < live && entries[last].law == f && entries[last].fused == fused) ++last;
-        try {
-            if (fused) entries[first].pass(*fused, *f, columns, contacts + first, last - first, flags);
-            else f->goBatch(contacts + first, last - first, flags);
-        } catch (const std::exception& e) { // (not out of the parallel region: reported after it; the contacts stay)
-            std::fill(flags, flags + (last - first), 1);
-#pragma omp critical(yadeError)
-            error = f->getClassName() + ": " + e.what();
-        }
-        for (size_t e = first; e < last; ++e) {
-            const bool keep = flags[e - first];
-            if (!keep) intrs.endContact((size_t)entries[e].k); // back to a potential interaction
-            setWasReal(wasReal, entries[e].k, keep);
-        }
+        applyRun(f, fused, entries[first].pass, sc.contacts.data() + first, last - first, sc.flags.data(), columns, error);
         first = last;
     }
 }
 
+// One run of step 4; the contacts the law ends become potential.
+void InteractionLoop::applyRun(LawFunctor* f, IGeomFunctor* fused, KernelPasses::Pass pass, Contact* c, size_t n, char* flags,
+        const BodyColumns& columns, std::string& error) {
+    InteractionContainer& intrs = scene->interactions;
+    char* const wasReal = intrs.wasReal.data();
+    try {
+        if (fused) pass(*fused, *f, columns, c, n, flags);
+        else f->goBatch(c, n, flags);
+    } catch (const std::exception& e) { // (not out of the parallel region: reported after it; the contacts stay)
+        std::fill(flags, flags + n, 1);
+#pragma omp critical(yadeError)
+        error = f->getClassName() + ": " + e.what();
+    }
+    for (size_t e = 0; e < n; ++e) {
+        const bool keep = flags[e];
+        if (!keep) intrs.endContact((size_t)c[e].k); // back to a potential interaction
+        setWasReal(wasReal, c[e].k, keep);
+    }
+}
+
+// After a batch computed in full: kept if all its entries were existing contacts of fast passes,
+// none left out (n: entries gathered, live: left for step 4).
+void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live) {
+    KeptBatch& kb = kept[list][j0 / batchEntries];
+    kb.generation = -1;
+    if (n != j1 - j0 || live != n) return;
+    const Scratch::Entry* entries = sc.entries.data();
+    for (size_t e = 0; e < n; ++e)
+        if (!entries[e].fused) return;
+    const unsigned* todo = work[list]->todo;
+    const InteractionContainer& intrs = scene->interactions;
+    kb.position.resize(n);
+    kb.where.resize(n);
+    kb.runs.clear();
+    for (size_t e = 0; e < n; ++e) {
+        kb.position[e] = todo ? todo[j0 + e] : (unsigned)(j0 + e);
+        kb.where[e] = intrs.contactOf[entries[e].k];
+        if (e == 0 || entries[e].law != entries[e - 1].law || entries[e].fused != entries[e - 1].fused)
+            kb.runs.push_back(KeptBatch::Run{entries[e].law, entries[e].fused, entries[e].pass, 0});
+        ++kb.runs.back().count;
+    }
+    kb.end = j1;
+    kb.generation = keptGeneration;
+}
+
+// A kept batch computed again (false, with nothing done, if it is not the same batch): the contacts
+// from their records, then step 4 over its runs.
+bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, const BodyColumns& columns, std::string& error) {
+    const KeptBatch& kb = kept[list][j0 / batchEntries];
+    if (kb.generation != keptGeneration || kb.end != j1) return false;
+    InteractionContainer& intrs = scene->interactions;
+    Scratch& sc = *scratch[threadNumber()];
+    if (sc.contacts.size() < batchEntries) return false; // (sized by gatherBatch)
+    const unsigned* todo = work[list]->todo;
+    const uint32_t* pairs = threadPairs[list].data();
+    const uint32_t* contactOf = intrs.contactOf.data();
+    const char* wasReal = intrs.wasReal.data();
+    const Body::id_t* ids = intrs.pairIds.data();
+    Contact* const contacts = sc.contacts.data();
+    const ContactPool* pool = nullptr;
+    uint32_t poolIndex = InteractionContainer::noContact;
+    for (size_t e = 0; e < j1 - j0; ++e) {
+        const unsigned i = todo ? todo[j0 + e] : (unsigned)(j0 + e);
+        if (i != kb.position[e]) return false;
+        const long k = pairs[i];
+        const uint32_t where = contactOf[k];
+        if (where != kb.where[e] || !wasReal[k]) return false;
+        if (InteractionContainer::poolOf(where) != poolIndex) {
+            poolIndex = InteractionContainer::poolOf(where);
+            pool = intrs.pools[poolIndex].get();
+        }
+        const uint32_t slot = InteractionContainer::slotOf(where);
+        contacts[e] = Contact(&intrs, k, pool->geom(slot), pool->phys(slot), ids[2 * k], ids[2 * k + 1]);
+    }
+    size_t first = 0;
+    for (const KeptBatch::Run& r : kb.runs) {
+        applyRun(r.law, r.fused, r.pass, contacts + first, r.count, sc.flags.data(), columns, error);
+        first += r.count;
+    }
+    ++sc.replayed;
+    return true;
+}
+
 // Entries j0 .. j1-1 of thread list `list` (at most batchEntries), in four steps: gatherBatch,
-// computeGeometry, settleContacts, applyLaws. Forces are added in the order of the list. Existing
-// contacts are reached through the container's columns, never through their Interaction.
+// computeGeometry, settleContacts, applyLaws (or a kept batch again). Forces are added in the order
+// of the list. Existing contacts are reached through the container's columns, never through their
+// Interaction.
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
+    static_assert(chunkEntries % batchEntries == 0, "a chunk is whole batches (kept batches are found by j0 / batchEntries)");
+    const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
+    if (fusedPasses && replayBatch(list, j0, j1, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
-    if (n == 0) return;
-    const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
-    computeGeometry(sc, n, columns);
-    const size_t live = settleContacts(sc, n, error);
+    if (n > 0) computeGeometry(sc, n, columns);
+    const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
+    if (fusedPasses) keepBatch(sc, list, j0, j1, n, live);
 }
 
 void InteractionLoop::action() {
@@ -664,7 +734,7 @@ void InteractionLoop::action() {
 
 // The dispatch tables resolved (and the functor chain checked when they changed), every functor
 // told its scene.
-void InteractionLoop::prepareFunctors() {
+bool InteractionLoop::prepareFunctors() {
     Scene& s = *scene;
     const bool changed = geomDispatcher->prepareTable() | physDispatcher->prepareTable() | lawDispatcher->prepareTable();
     if (changed) checkFunctorChain();
@@ -673,6 +743,7 @@ void InteractionLoop::prepareFunctors() {
             f->scene = &s;
             f->prepare();
         }
+    return changed;
 }
 
 // Each pool's Law2 functor, for the current law table (before the parallel part reads them).
@@ -723,6 +794,7 @@ void InteractionLoop::gatherTodo(int list, const Real* skipAbove) {
         w.count = count;
         w.todo = entries.data();
     }
+    kept[list].resize((w.count + batchEntries - 1) / batchEntries);
 }
 
 // With several threads: this thread's own chunks from the front, then the others' last chunks (their
@@ -762,7 +834,7 @@ void InteractionLoop::runLoop() {
     Scene& s = *scene;
     if (!geomDispatcher || !physDispatcher || !lawDispatcher) // (None assigned from Python or read from a file)
         throw std::invalid_argument("InteractionLoop: geomDispatcher, physDispatcher and lawDispatcher must not be None");
-    prepareFunctors();
+    const bool functorsChanged = prepareFunctors();
     const BodyContainer& bodies = s.bodies;
     InteractionContainer& intrs = s.interactions;
     const int threads = s.threads(); // (the scene's count, which its force and energy buffers are made for; Omega sets OpenMP's to it)
@@ -797,6 +869,12 @@ void InteractionLoop::runLoop() {
             break;
         }
     prepareSkin(quick);
+    const KeptKey key{intrs.changes, s.serial, threadPairsBuild, lawDispatcher->tableGeneration(), externalWrites()};
+    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (the kept batches are stale)
+        keptKey = key;
+        ++keptGeneration;
+    }
+    if (kept.size() != (size_t)threads) kept.resize(threads);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)
     // D² of the spheres, and of the facets
     Real displacement2 = 0;
@@ -855,6 +933,11 @@ void InteractionLoop::runLoop() {
     }
     pairsTested = 0;
     for (const auto& w : work) pairsTested += (long long)w->count;
+    keptBatches = 0;
+    for (const auto& sc : scratch) {
+        keptBatches += sc->replayed;
+        sc->replayed = 0;
+    }
     for (const auto& p : missingIg2) warnMissingIg2(*p.first, *p.second);
     if (!error.empty()) throw std::runtime_error("InteractionLoop: " + error);
 }

@@ -30,6 +30,7 @@ public:
     bool fastPath = true;
     bool fusedPasses = true;
     long long pairsTested = 0;
+    long long keptBatches = 0;
     // How the pairs were split between the threads when the scene was saved, run-length encoded
     // (thread, count of consecutive pairs, thread, count...): the first split after a load is that
     // one, so that a loaded scene continues bit for bit with as many threads (the sums of the
@@ -44,6 +45,7 @@ public:
         v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of existing contacts in one pass, two contacts at a time, where both functors are kernels (Ig2_Sphere_Sphere_ScGeom or Ig2_Facet_Sphere_ScGeom with any Law2 functor on ScGeom written as a kernel: doc/contact-laws.md): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
         v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
+        v.attr("keptBatches", keptBatches, "Batches of contacts the last step computed again as the step before had gathered them, without gathering them (fusedPasses: their entries, functors and records unchanged; for profiling)", Attr::readonly | Attr::noSave);
         v.attr("threadSplit", threadSplit, "How the pairs were split between threads when saved (thread, count, ...): a loaded scene splits them the same way", Attr::hidden);
     }
     void action() override;
@@ -54,7 +56,7 @@ public:
 
 private:
     void runLoop(); // the step's work, without the callbacks
-    void prepareFunctors();
+    bool prepareFunctors(); // true if a dispatch table was filled anew
     void refreshPoolLaws();
     void gatherTodo(int list, const Real* skipAbove);
     template <class Process> void runChunks(int first, int step, int threads, Process& process);
@@ -194,6 +196,7 @@ private:
         const LawFunctor* passLaw = nullptr;
         KernelPasses::Pass pass = nullptr;
         Interaction standIn; // what the Ip2 functors get for a pair without object
+        long long replayed = 0; // kept batches computed again in this step
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
@@ -205,6 +208,41 @@ private:
     size_t settleContacts(Scratch& sc, size_t n, std::string& error);
     bool makeNewContact(Scratch& sc, Contact& c, long k, std::string& error);
     void applyLaws(Scratch& sc, size_t live, const BodyColumns& columns, std::string& error);
+    // one run of step 4: contacts c[0] .. c[n-1] of one Law2 functor (with the Ig2 functor of its fast pass, or not)
+    void applyRun(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass, Contact* c, size_t n, char* flags, const BodyColumns& columns,
+            std::string& error);
+    // Kept batches (doc/storage.md, "Kept batches"): a batch whose entries were all existing contacts
+    // of fast passes is kept as its entries' positions in the thread list and where their records
+    // were, with its runs of one pass. While the same positions come to be tested, each still a
+    // contact whose record did not move, and nothing the gathering reads changed (keptKey), the next
+    // step computes it from these without gathering (replayBatch): what gatherBatch would have
+    // found, in the same order, so the same bits. In a packing whose contacts last (most steps of
+    // most runs) this is every batch.
+    struct KeptBatch {
+        struct Run {
+            LawFunctor* law;
+            IGeomFunctor* fused;
+            KernelPasses::Pass pass;
+            size_t count;
+        };
+        long long generation = -1;     // keptGeneration when kept (-1: none)
+        size_t end = 0;                // the batch's end in the list's todo (j1)
+        std::vector<unsigned> position; // per entry: its position in the thread list
+        std::vector<uint32_t> where;   // per entry: InteractionContainer::contactOf then
+        std::vector<Run> runs;
+    };
+    std::vector<std::vector<KeptBatch>> kept; // [list][batch]
+    // What the entries' functors, objects and order depend on besides their positions and records:
+    // a change of any makes every kept batch stale (a new keptGeneration).
+    struct KeptKey {
+        long long changes = -1, serial = -1, pairsBuild = -1, lawTable = -1, writes = -1;
+        bool operator==(const KeptKey& o) const {
+            return changes == o.changes && serial == o.serial && pairsBuild == o.pairsBuild && lawTable == o.lawTable && writes == o.writes;
+        }
+    } keptKey;
+    long long keptGeneration = 0;
+    void keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live);
+    bool replayBatch(int list, size_t j0, size_t j1, const BodyColumns& columns, std::string& error);
     void swapPair(long k);
     IGeomFunctor* fastPass(Scratch& sc, IGeomFunctor* geom, LawFunctor* law);
     struct PoolCursor { // the pool of the last contact looked up (consecutive ones are mostly of one kind)
