@@ -305,6 +305,34 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     return true;
 }
 
+// A free sphere's step (no blocked DOF, equal principal moments; without energy tracking or mask):
+// integrateBody's arithmetic in the same order, without the tests that cannot apply (the same bits).
+static inline bool isFreeSphere(const BodyStore::Columns& h, long id) {
+    return h.exists[id] && h.blockedDOFsMask[id] == 0 && !unequalMoments(h.inertia[id]);
+}
+static inline bool integrateFreeSphere(const IntegratorStep& st, long id, Real& maxV2) {
+    const BodyStore::Columns& h = st.h;
+    const bool damped = st.lambda != 0 && h.isDamped[id];
+    const Vector3r& inertia = h.inertia[id];
+    Vector3r vel = h.vel[id], angVel = h.angVel[id];
+    Vector3r undamped;
+    const Vector3r accel = linearAccel(st, st.F[id], h.mass[id], 0, damped, vel, st.g, undamped);
+    const Vector3r& torque = st.T[id];
+    const bool still = (angVel.array() == 0).all() && (torque.array() == 0).all() && (inertia.array() > 0).all();
+    Vector3r angAccel = still ? Vector3r::Zero() : Vector3r(torque.cwiseQuotient(inertia));
+    if (damped && !still) NewtonIntegrator::damp(angAccel, angVel, st.dt, st.lambda);
+    angVel += st.dt * angAccel;
+    vel += st.dt * accel;
+    const Vector3r pos = h.pos[id] + vel * st.dt;
+    if (!finiteState(pos, vel, angVel, BodyEnergy(), h.ori[id])) return false;
+    h.vel[id] = vel;
+    h.angVel[id] = angVel;
+    h.pos[id] = pos;
+    maxV2 = std::max(maxV2, vel.squaredNorm());
+    st.spins[id] = 1;
+    return true;
+}
+
 // The skin's displacement (doc/performance.md, "The skin of the fast path"): the largest squared
 // distance of bodies b0 .. b1-1 from their reference positions, into m (just written: in cache;
 // holes and bodies other than spheres: their reference is NaN, ignored).
@@ -321,10 +349,15 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
     bool any = sums.any;
     Real maxV2 = x.maxV2, maxMoved2 = x.maxMoved2;
     long diverged = x.diverged;
+    const bool lean = !st.energy && st.moveMask == -1;
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
         const long b1 = std::min(hi, b0 + chunkBodies);
-        for (long id = b0; id < b1; ++id)
-            if (!integrateBody(st, id, sum, any, maxV2)) diverged = std::max(diverged, id);
+        if (lean) { // (free spheres: their own step)
+            for (long id = b0; id < b1; ++id)
+                if (!(isFreeSphere(st.h, id) ? integrateFreeSphere(st, id, maxV2) : integrateBody(st, id, sum, any, maxV2))) diverged = std::max(diverged, id);
+        } else
+            for (long id = b0; id < b1; ++id)
+                if (!integrateBody(st, id, sum, any, maxV2)) diverged = std::max(diverged, id);
         turnSpheres(st.h, st.spins, b0, b1, st.dt);
         if (st.reference) maxMovedSince(st, b0, b1, maxMoved2);
     }
