@@ -1,4 +1,5 @@
 #include <core/Scene.hpp>
+#include <lib/base/Lanes.hpp>
 #include <lib/base/ThreadRange.hpp>
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
@@ -38,31 +39,67 @@ static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
 
 static constexpr int allRotations = State::DOF_RX | State::DOF_RY | State::DOF_RZ;
 
-// The spherical rotation update (3.5.9) of bodies b0 .. b1-1 whose spins[id] is set (1: the fast update;
-// 2: a body whose rotations are all blocked, turned by the reference's formula): each turned by
-// angVel·dt about angVel. In a loop of its own, after the one that updates the velocities: each turn
-// waits for its spin, and in one loop with the rest a body's whole update was one chain of
-// dependent operations the processor could not overlap with the next body's (this loop is short:
-// several bodies are in flight at once).
+// The spherical rotation update (3.5.9) of one body (T = Real) or of two consecutive ones (T = Two,
+// lib/base/Lanes.hpp: the same bits): each turned by angVel·dt about angVel; a body that does not
+// spin keeps its orientation.
+template <class T> YADE_KERNEL void turnStep(const BodyStore::Columns& h, long id, Real dt) {
+    constexpr int lanes = lanesOf<T>;
+    LaneIds<T> ids;
+    for (int i = 0; i < lanes; ++i) ids.i[i] = id + i;
+    const Vec3<T> w = gather<T>(h.angVel, ids);
+    const T angle = norm(w) * T(dt);
+    bool small = true; // (every lane in the range of sincCosHalf's series: the usual case)
+    for (int i = 0; i < lanes; ++i) small &= 0.25 * lane(angle, i) * lane(angle, i) < 1e-4;
+    T sincHalf, cosHalf;
+    if (small) {
+        const T x = T(0.5) * angle, x2 = x * x;
+        sincHalf = T(1.0) - x2 * T(1. / 6) * (T(1.0) - x2 * T(1. / 20) * (T(1.0) - x2 * T(1. / 42)));
+        cosHalf = T(1.0) - x2 * T(0.5) * (T(1.0) - x2 * T(1. / 12) * (T(1.0) - x2 * T(1. / 30) * (T(1.0) - x2 * T(1. / 56))));
+    } else {
+        Real s[lanes], c[lanes];
+        for (int i = 0; i < lanes; ++i) sincCosHalf(lane(angle, i), s[i], c[i]);
+        sincHalf = eachLane<T>([&](int i) { return s[i]; });
+        cosHalf = eachLane<T>([&](int i) { return c[i]; });
+    }
+    const T k = sincHalf * T(0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
+    // (cosHalf, k·ω) * ori, in the order of Eigen's product of two quaternions (its SSE2 form)
+    const T ax = k * w.x, ay = k * w.y, az = k * w.z, aw = cosHalf;
+    const T bx = eachLane<T>([&](int i) { return h.ori[id + i].x(); }), by = eachLane<T>([&](int i) { return h.ori[id + i].y(); });
+    const T bz = eachLane<T>([&](int i) { return h.ori[id + i].z(); }), bw = eachLane<T>([&](int i) { return h.ori[id + i].w(); });
+    const T qx = (aw * bx + ay * bz) - (az * by - ax * bw), qy = (aw * by + ay * bw) + (az * bx - ax * bz);
+    const T qz = (aw * bz - ay * bx) + (az * bw + ax * by), qw = (aw * bw - ay * by) - (az * bz + ax * bx);
+    // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
+    // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit length from
+    // Python gets the exact division)
+    const T n2 = (qx * qx + qz * qz) + (qy * qy + qw * qw);
+    const T factor = eachLane<T>([&](int i) {
+        const Real m = lane(n2, i);
+        return std::abs(m - 1) < 1e-8 ? 0.5 * (3 - m) : 1 / std::sqrt(m);
+    });
+    const T x = qx * factor, y = qy * factor, z = qz * factor, wq = qw * factor;
+    for (int i = 0; i < lanes; ++i)
+        if (lane(angle, i) != 0) h.ori[id + i] = Quaternionr(lane(wq, i), lane(x, i), lane(y, i), lane(z, i));
+}
+
+// The rotation update of bodies b0 .. b1-1 whose spins[id] is set (1: turnStep; 2: a body whose
+// rotations are all blocked, turned by the reference's formula). In a loop of its own, after the one
+// that updates the velocities: each turn waits for its spin, and in one loop with the rest a body's
+// whole update was one chain of dependent operations the processor could not overlap with the next
+// body's (this loop is short: several bodies are in flight at once, two in each turnStep).
 static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0, long b1, Real dt) {
-    for (long id = b0; id < b1; ++id) {
-        if (!spins[id]) continue;
-        const Vector3r& angVel = h.angVel[id];
-        const Real w = angVel.norm(), angle = w * dt;
-        if (angle == 0) continue;
-        if (spins[id] == 2) { // a body turned by an engine (facets of a drum): the turn as the reference computes it
-            h.ori[id] = (Quaternionr(AngleAxisr(angle, angVel / w)) * h.ori[id]).normalized();
+    for (long id = b0; id < b1;) {
+        if (id + 1 < b1 && spins[id] == 1 && spins[id + 1] == 1) {
+            turnStep<Two>(h, id, dt);
+            id += 2;
             continue;
         }
-        Real sincHalf, cosHalf;
-        sincCosHalf(angle, sincHalf, cosHalf);
-        const Real k = sincHalf * (0.5 * dt); // sin(angle/2) / |ω|, angle = |ω|·dt
-        const Quaternionr q = Quaternionr(cosHalf, k * angVel[0], k * angVel[1], k * angVel[2]) * h.ori[id];
-        // back to unit length: |q|² = 1 + e, e of the order of the rounding after a step, and then
-        // 1/sqrt(1 + e) = (3 - |q|²)/2 + O(e²) in double precision (an ori set far from unit
-        // length from Python gets the exact division)
-        const Real n2 = q.coeffs().squaredNorm();
-        h.ori[id].coeffs() = q.coeffs() * (std::abs(n2 - 1) < 1e-8 ? 0.5 * (3 - n2) : 1 / std::sqrt(n2));
+        if (spins[id] == 1) turnStep<Real>(h, id, dt);
+        else if (spins[id] == 2) { // a body turned by an engine (facets of a drum): the turn as the reference computes it
+            const Vector3r& angVel = h.angVel[id];
+            const Real w = angVel.norm(), angle = w * dt;
+            if (angle != 0) h.ori[id] = (Quaternionr(AngleAxisr(angle, angVel / w)) * h.ori[id]).normalized();
+        }
+        ++id;
     }
 }
 
@@ -306,30 +343,54 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
 }
 
 // A free sphere's step (no blocked DOF, equal principal moments; without energy tracking or mask):
-// integrateBody's arithmetic in the same order, without the tests that cannot apply (the same bits).
+// integrateBody's arithmetic in the same order, without the tests that cannot apply, written once
+// for one body (T = Real) and for two consecutive ones (T = Two, one in each lane: lib/base/Lanes.hpp),
+// which give the same bits. Returns false, having written nothing, if a lane's new state is not finite
+// (integrateBody then takes the bodies one by one and reports it).
 static inline bool isFreeSphere(const BodyStore::Columns& h, long id) {
     return h.exists[id] && h.blockedDOFsMask[id] == 0 && !unequalMoments(h.inertia[id]);
 }
-static inline bool integrateFreeSphere(const IntegratorStep& st, long id, Real& maxV2) {
+// (3.5.12) lane by lane, as NewtonIntegrator::damp: a·(1 - λ·sign(a·(v + a·dt/2))), sign(NaN) = 0
+template <class T> YADE_KERNEL T dampLane(T a, T v, T halfDt, T lambda) {
+    const T p = a * (v + halfDt * a);
+    const T sign = select(greater(p, T(0.0)), T(1.0), select(greater(T(0.0), p), T(-1.0), T(0.0)));
+    return a * (T(1.0) - lambda * sign);
+}
+template <class T> YADE_KERNEL Vec3<T> dampVec(const Vec3<T>& a, const Vec3<T>& v, T halfDt, T lambda) {
+    return {dampLane(a.x, v.x, halfDt, lambda), dampLane(a.y, v.y, halfDt, lambda), dampLane(a.z, v.z, halfDt, lambda)};
+}
+template <class T> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, long id, Real& maxV2) {
+    constexpr int lanes = lanesOf<T>;
     const BodyStore::Columns& h = st.h;
-    const bool damped = st.lambda != 0 && h.isDamped[id];
-    const Vector3r& inertia = h.inertia[id];
-    Vector3r vel = h.vel[id], angVel = h.angVel[id];
-    Vector3r undamped;
-    const Vector3r accel = linearAccel(st, st.F[id], h.mass[id], 0, damped, vel, st.g, undamped);
-    const Vector3r& torque = st.T[id];
-    const bool still = (angVel.array() == 0).all() && (torque.array() == 0).all() && (inertia.array() > 0).all();
-    Vector3r angAccel = still ? Vector3r::Zero() : Vector3r(torque.cwiseQuotient(inertia));
-    if (damped && !still) NewtonIntegrator::damp(angAccel, angVel, st.dt, st.lambda);
-    angVel += st.dt * angAccel;
-    vel += st.dt * accel;
-    const Vector3r pos = h.pos[id] + vel * st.dt;
-    if (!finiteState(pos, vel, angVel, BodyEnergy(), h.ori[id])) return false;
-    h.vel[id] = vel;
-    h.angVel[id] = angVel;
-    h.pos[id] = pos;
-    maxV2 = std::max(maxV2, vel.squaredNorm());
-    st.spins[id] = 1;
+    LaneIds<T> ids;
+    for (int i = 0; i < lanes; ++i) ids.i[i] = id + i;
+    const T dt(st.dt), halfDt(0.5 * st.dt), lambda(st.lambda), zero(0.0);
+    const MaskOf<T> damped = greater(eachLane<T>([&](int i) { return st.lambda != 0 && h.isDamped[id + i] ? 1.0 : 0.0; }), zero);
+    const Vec3<T> g{T(st.g[0]), T(st.g[1]), T(st.g[2])};
+    Vec3<T> vel = gather<T>(h.vel, ids), angVel = gather<T>(h.angVel, ids);
+    // translation (linearAccel with nothing blocked)
+    Vec3<T> accel = gather<T>(st.F, ids) / gather(h.mass, ids);
+    if (st.gravityDamped) accel = accel + g;
+    accel = select(damped, dampVec(accel, vel, halfDt, lambda), accel);
+    if (!st.gravityDamped) accel = accel + g;
+    // rotation (rotateSphere): a still body (no spin, no torque) keeps a zero acceleration, undamped
+    const Vec3<T> torque = gather<T>(st.T, ids), inertia = gather<T>(h.inertia, ids);
+    const MaskOf<T> still = equal(angVel.x, zero) & equal(angVel.y, zero) & equal(angVel.z, zero) & equal(torque.x, zero)
+            & equal(torque.y, zero) & equal(torque.z, zero) & greater(inertia.x, zero) & greater(inertia.y, zero) & greater(inertia.z, zero);
+    Vec3<T> angAccel = select(still, Vec3<T>::zero(), Vec3<T>(torque.x / inertia.x, torque.y / inertia.y, torque.z / inertia.z));
+    angAccel = select(damped & !still, dampVec(angAccel, angVel, halfDt, lambda), angAccel);
+    angVel = angVel + dt * angAccel;
+    vel = vel + dt * accel;
+    const Vec3<T> pos = gather<T>(h.pos, ids) + vel * dt;
+    for (int i = 0; i < lanes; ++i)
+        if (!finiteState(pos.lane(i), vel.lane(i), angVel.lane(i), BodyEnergy(), h.ori[id + i])) return false;
+    for (int i = 0; i < lanes; ++i) {
+        h.vel[id + i] = vel.lane(i);
+        h.angVel[id + i] = angVel.lane(i);
+        h.pos[id + i] = pos.lane(i);
+        maxV2 = std::max(maxV2, h.vel[id + i].squaredNorm());
+        st.spins[id + i] = 1;
+    }
     return true;
 }
 
@@ -352,9 +413,16 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
     const bool lean = !st.energy && st.moveMask == -1;
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
         const long b1 = std::min(hi, b0 + chunkBodies);
-        if (lean) { // (free spheres: their own step)
-            for (long id = b0; id < b1; ++id)
-                if (!(isFreeSphere(st.h, id) ? integrateFreeSphere(st, id, maxV2) : integrateBody(st, id, sum, any, maxV2))) diverged = std::max(diverged, id);
+        if (lean) { // (free spheres: their own step, two at a time)
+            for (long id = b0; id < b1;) {
+                if (id + 1 < b1 && isFreeSphere(st.h, id) && isFreeSphere(st.h, id + 1) && freeSpheresStep<Two>(st, id, maxV2)) {
+                    id += 2;
+                    continue;
+                }
+                if (!(isFreeSphere(st.h, id) && freeSpheresStep<Real>(st, id, maxV2)) && !integrateBody(st, id, sum, any, maxV2))
+                    diverged = std::max(diverged, id);
+                ++id;
+            }
         } else
             for (long id = b0; id < b1; ++id)
                 if (!integrateBody(st, id, sum, any, maxV2)) diverged = std::max(diverged, id);
