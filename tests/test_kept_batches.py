@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from yade import *  # noqa: F401,F403
-from yade import O, geom
+from yade import O, geom, pack
 from yade.utils import *  # noqa: F401,F403
 
 
@@ -73,6 +73,41 @@ def test_a_lasting_packing_is_computed_from_kept_batches_with_the_same_bits(thre
     kept = same_bits(lambda step: None, threads)
     # 729 spheres, about 2 000 contacts: every batch of the last step was a kept one
     assert min(kept) >= 2000 // 256, kept
+
+
+def deposition(fused):
+    """Spheres falling into a box: contacts start and end in most steps, and most batches mix
+    contacts with potential pairs still apart."""
+    O.reset()
+    O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600))
+    N, r = 1000, .01
+    side = (N * (4. / 3.) * 3.14159 * r ** 3 / .3) ** (1. / 3.)
+    O.bodies.append(geom.facetBox((side / 2, side / 2, side), (side / 2, side / 2, side), wallMask=31))
+    sp = pack.SpherePack()
+    sp.makeCloud((0, 0, 0), (side, side, 1.5 * side), rMean=r, rRelFuzz=.2, num=N, seed=1)
+    sp.toSimulation()
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                           [Law2_ScGeom_FrictPhys_CundallStrack()])
+    loop.fusedPasses = fused
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
+                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=.4)]
+    O.dt = .5 * PWaveTimeStep()
+    kept, states = 0, []
+    for step in range(1500):
+        O.run(1, True)
+        kept += loop.keptBatches
+        if step % 250 == 249:
+            states.append(b''.join(np.array(b.state.pos).tobytes() + np.array(b.state.vel).tobytes() for b in O.bodies))
+    return states, kept
+
+
+def test_batches_with_pairs_still_apart_and_contacts_that_end_keep_the_bits():
+    fast, kept = deposition(True)
+    general, none = deposition(False)
+    assert none == 0
+    assert kept > 100, kept
+    for m, (a, b) in enumerate(zip(fast, general)):
+        assert a == b, "the states differ after %d steps" % (250 * (m + 1))
 
 
 def test_writes_from_python_make_them_stale():

@@ -366,6 +366,19 @@ IGeomFunctor* InteractionLoop::fastPass(Scratch& sc, IGeomFunctor* geom, LawFunc
     return sc.pass ? geom : nullptr;
 }
 
+// A potential pair (ids: its two) that quickReject finds still apart; its gap beyond reach, less the
+// margin, then kept for the skin at entry i of the list (gaps null: no skin).
+inline bool InteractionLoop::stillApart(const Body::id_t* ids, size_t i, float* gaps, unsigned char* withFacet, const Real* twiceD) const {
+    Real gap;
+    if (!quickReject(ids[0], ids[1], gap)) return false;
+    if (gaps) {
+        const bool facet = (shapeRadius[ids[0]] < 0) | (shapeRadius[ids[1]] < 0); // (a facet's radius is its code)
+        gaps[i] = floatBelow(gap - twiceD[facet]);
+        withFacet[i] = facet;
+    }
+    return true;
+}
+
 // Step 1 of processBatch: the entries j0 .. j1-1 of thread list `list` that the quick rejects
 // leave, with their Ig2 functor and, for existing contacts, their objects and Law2 functor (into
 // sc's entries and contacts); returns how many.
@@ -386,12 +399,14 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         sc.contacts.resize(batchEntries);
         sc.made.resize(batchEntries);
         sc.flags.resize(batchEntries);
+        sc.apart.resize(batchEntries);
     }
     // (raw pointers: through the containers each access would reload them; none of these arrays
     // is resized below)
     Scratch::Entry* const entries = sc.entries.data();
     Contact* const contacts = sc.contacts.data();
     char* const wasReal = intrs.wasReal.data();
+    char* const apart = sc.apart.data();
     size_t n = 0;
     sc.oneGeomFunctor = true;
     // (raw pointers: through the containers each access would reload them)
@@ -424,15 +439,8 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         }
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
-        Real gap;
-        if (quick && !wasReal[k] && quickReject(ids[2 * k], ids[2 * k + 1], gap)) {
-            if (gaps) {
-                const bool facet = (shapeRadius[ids[2 * k]] < 0) | (shapeRadius[ids[2 * k + 1]] < 0); // (a facet's radius is its code)
-                gaps[i] = floatBelow(gap - twiceD[facet]);
-                withFacet[i] = facet;
-            }
-            continue; // still apart
-        }
+        apart[j - j0] = quick && !wasReal[k] && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD);
+        if (apart[j - j0]) continue;
         if (gaps) gaps[i] = -Inf; // tested again at the next step
         const int c1 = shapeIndex[ids[2 * k]], c2 = shapeIndex[ids[2 * k + 1]];
         if (c1 < 0 || c2 < 0) continue; // a body without shape
@@ -639,26 +647,36 @@ void InteractionLoop::applyRun(LawFunctor* f, IGeomFunctor* fused, KernelPasses:
     }
 }
 
-// After a batch computed in full: kept if all its entries were existing contacts of fast passes,
-// none left out (n: entries gathered, live: left for step 4).
+// After a batch computed in full: kept if each of its entries was either an existing contact of a
+// fast pass that lasts or a potential pair still apart, none left out for another reason (n: entries
+// gathered, live: left for step 4).
 void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live) {
     KeptBatch& kb = kept[list][j0 / batchEntries];
     kb.generation = -1;
-    if (n != j1 - j0 || live != n) return;
+    const size_t count = j1 - j0;
+    size_t apart = 0;
+    for (size_t j = 0; j < count; ++j) apart += sc.apart[j];
+    if (n + apart != count || live != n) return;
     const Scratch::Entry* entries = sc.entries.data();
     for (size_t e = 0; e < n; ++e)
         if (!entries[e].fused) return;
     const unsigned* todo = work[list]->todo;
     const InteractionContainer& intrs = scene->interactions;
-    kb.position.resize(n);
-    kb.where.resize(n);
+    kb.position.resize(count);
+    kb.where.resize(count);
     kb.runs.clear();
-    for (size_t e = 0; e < n; ++e) {
-        kb.position[e] = todo ? todo[j0 + e] : (unsigned)(j0 + e);
-        kb.where[e] = intrs.contactOf[entries[e].k];
+    for (size_t j = 0, e = 0; j < count; ++j) {
+        kb.position[j] = todo ? todo[j0 + j] : (unsigned)(j0 + j);
+        if (sc.apart[j]) {
+            kb.where[j] = InteractionContainer::noContact;
+            continue;
+        }
+        kb.where[j] = intrs.contactOf[entries[e].k];
+        if (kb.where[j] == InteractionContainer::noContact) return; // (the law ended it: the batch changes)
         if (e == 0 || entries[e].law != entries[e - 1].law || entries[e].fused != entries[e - 1].fused)
             kb.runs.push_back(KeptBatch::Run{entries[e].law, entries[e].fused, entries[e].pass, 0});
         ++kb.runs.back().count;
+        ++e;
     }
     kb.end = j1;
     kb.generation = keptGeneration;
@@ -666,7 +684,7 @@ void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j
 
 // A kept batch computed again (false, with nothing done, if it is not the same batch): the contacts
 // from their records, then step 4 over its runs.
-bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, const BodyColumns& columns, std::string& error) {
+bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD, const BodyColumns& columns, std::string& error) {
     const KeptBatch& kb = kept[list][j0 / batchEntries];
     if (kb.generation != keptGeneration || kb.end != j1) return false;
     InteractionContainer& intrs = scene->interactions;
@@ -677,13 +695,22 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, const BodyColu
     const uint32_t* contactOf = intrs.contactOf.data();
     const char* wasReal = intrs.wasReal.data();
     const Body::id_t* ids = intrs.pairIds.data();
+    float* gaps = skin.active ? skin.gap[list].data() : nullptr;
+    unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     Contact* const contacts = sc.contacts.data();
     const ContactPool* pool = nullptr;
     uint32_t poolIndex = InteractionContainer::noContact;
+    size_t n = 0;
+    // (a batch found not to be the same after some pairs still apart recorded their gaps: the
+    // gathering records the same ones again)
     for (size_t e = 0; e < j1 - j0; ++e) {
         const unsigned i = todo ? todo[j0 + e] : (unsigned)(j0 + e);
         if (i != kb.position[e]) return false;
         const long k = pairs[i];
+        if (kb.where[e] == InteractionContainer::noContact) { // a pair still apart then: still apart now?
+            if (!(quick && !wasReal[k] && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD))) return false;
+            continue;
+        }
         const uint32_t where = contactOf[k];
         if (where != kb.where[e] || !wasReal[k]) return false;
         if (InteractionContainer::poolOf(where) != poolIndex) {
@@ -691,7 +718,7 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, const BodyColu
             pool = intrs.pools[poolIndex].get();
         }
         const uint32_t slot = InteractionContainer::slotOf(where);
-        contacts[e] = Contact(&intrs, k, pool->geom(slot), pool->phys(slot), ids[2 * k], ids[2 * k + 1]);
+        contacts[n++] = Contact(&intrs, k, pool->geom(slot), pool->phys(slot), ids[2 * k], ids[2 * k + 1]);
     }
     size_t first = 0;
     for (const KeptBatch::Run& r : kb.runs) {
@@ -710,7 +737,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     static_assert(chunkEntries % batchEntries == 0, "a chunk is whole batches (kept batches are found by j0 / batchEntries)");
     const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
-    if (fusedPasses && replayBatch(list, j0, j1, columns, error)) return;
+    if (fusedPasses && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
     if (n > 0) computeGeometry(sc, n, columns);

@@ -197,6 +197,7 @@ private:
         KernelPasses::Pass pass = nullptr;
         Interaction standIn; // what the Ip2 functors get for a pair without object
         long long replayed = 0; // kept batches computed again in this step
+        std::vector<char> apart; // (entry j - j0 of the batch: a potential pair still apart)
     };
     std::vector<std::unique_ptr<Scratch>> scratch; // [thread]
     void processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
@@ -212,12 +213,13 @@ private:
     void applyRun(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass, Contact* c, size_t n, char* flags, const BodyColumns& columns,
             std::string& error);
     // Kept batches (doc/storage.md, "Kept batches"): a batch whose entries were all existing contacts
-    // of fast passes is kept as its entries' positions in the thread list and where their records
-    // were, with its runs of one pass. While the same positions come to be tested, each still a
-    // contact whose record did not move, and nothing the gathering reads changed (keptKey), the next
-    // step computes it from these without gathering (replayBatch): what gatherBatch would have
-    // found, in the same order, so the same bits. In a packing whose contacts last (most steps of
-    // most runs) this is every batch.
+    // of fast passes or potential pairs still apart is kept as its entries' positions in the thread
+    // list and where their records were (noContact: apart), with its runs of one pass. While the same
+    // positions come to be tested, each contact's record did not move, each pair apart is still apart
+    // (tested again), and nothing the gathering reads changed (keptKey), the next step computes it
+    // from these without gathering (replayBatch): what gatherBatch would have found, in the same
+    // order, so the same bits. In a packing whose contacts last (most steps of most runs) this is
+    // most batches.
     struct KeptBatch {
         struct Run {
             LawFunctor* law;
@@ -228,7 +230,7 @@ private:
         long long generation = -1;     // keptGeneration when kept (-1: none)
         size_t end = 0;                // the batch's end in the list's todo (j1)
         std::vector<unsigned> position; // per entry: its position in the thread list
-        std::vector<uint32_t> where;   // per entry: InteractionContainer::contactOf then
+        std::vector<uint32_t> where;   // per entry: InteractionContainer::contactOf then (noContact: a pair still apart)
         std::vector<Run> runs;
     };
     std::vector<std::vector<KeptBatch>> kept; // [list][batch]
@@ -242,7 +244,8 @@ private:
     } keptKey;
     long long keptGeneration = 0;
     void keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live);
-    bool replayBatch(int list, size_t j0, size_t j1, const BodyColumns& columns, std::string& error);
+    bool replayBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD, const BodyColumns& columns, std::string& error);
+    bool stillApart(const Body::id_t* ids, size_t i, float* gaps, unsigned char* withFacet, const Real* twiceD) const;
     void swapPair(long k);
     IGeomFunctor* fastPass(Scratch& sc, IGeomFunctor* geom, LawFunctor* law);
     struct PoolCursor { // the pool of the last contact looked up (consecutive ones are mostly of one kind)
