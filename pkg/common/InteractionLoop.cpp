@@ -467,7 +467,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         // an existing contact whose Ig2 and Law2 functors have a fast pass: both run in step 4
         IGeomFunctor* fused = fuse && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
-        entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0};
+        entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1, (unsigned)i} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0, (unsigned)i};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         if (!fused) { // (may get a new geometry)
             contacts[n].made = made + n;
@@ -647,46 +647,56 @@ void InteractionLoop::applyRun(LawFunctor* f, IGeomFunctor* fused, KernelPasses:
     }
 }
 
-// After a batch computed in full: kept if each of its entries was either an existing contact of a
-// fast pass that lasts or a potential pair still apart, none left out for another reason (n: entries
-// gathered, live: left for step 4).
-void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live) {
-    KeptBatch& kb = kept[list][j0 / batchEntries];
-    kb.generation = -1;
-    const size_t count = j1 - j0;
-    size_t apart = 0;
-    for (size_t j = 0; j < count; ++j) apart += sc.apart[j];
-    if (n + apart != count || live != n) return;
-    const Scratch::Entry* entries = sc.entries.data();
-    for (size_t e = 0; e < n; ++e)
-        if (!entries[e].fused) return;
-    const unsigned* todo = work[list]->todo;
-    const InteractionContainer& intrs = scene->interactions;
-    kb.position.resize(count);
-    kb.where.resize(count);
-    kb.runs.clear();
-    for (size_t j = 0, e = 0; j < count; ++j) {
-        kb.position[j] = todo ? todo[j0 + j] : (unsigned)(j0 + j);
-        if (sc.apart[j]) {
-            kb.where[j] = InteractionContainer::noContact;
-            continue;
+// The index of a kind of kept contact in keptKinds, added if new (any thread).
+unsigned char InteractionLoop::keptKindOf(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass) {
+    auto find = [&](int from, int to) {
+        for (int c = from; c < to; ++c)
+            if (keptKinds[c].law == law && keptKinds[c].fused == fused && keptKinds[c].pass == pass) return c;
+        return -1;
+    };
+    const int known = keptKindCount.load(std::memory_order_acquire);
+    int c = find(0, known);
+    if (c >= 0) return (unsigned char)c;
+#pragma omp critical(yadeKeptKinds)
+    {
+        const int now = keptKindCount.load(std::memory_order_relaxed);
+        c = find(known, now);
+        if (c < 0 && now < (int)keptKinds.size()) {
+            keptKinds[now] = KeptKind{law, fused, pass};
+            keptKindCount.store(now + 1, std::memory_order_release);
+            c = now;
         }
-        kb.where[j] = intrs.contactOf[entries[e].k];
-        if (kb.where[j] == InteractionContainer::noContact) return; // (the law ended it: the batch changes)
-        if (e == 0 || entries[e].law != entries[e - 1].law || entries[e].fused != entries[e - 1].fused)
-            kb.runs.push_back(KeptBatch::Run{entries[e].law, entries[e].fused, entries[e].pass, 0});
-        ++kb.runs.back().count;
-        ++e;
     }
-    kb.end = j1;
-    kb.generation = keptGeneration;
+    return c >= 0 ? (unsigned char)c : keptUnknown;
 }
 
-// A kept batch computed again (false, with nothing done, if it is not the same batch): the contacts
-// from their records, then step 4 over its runs.
+// After a batch computed in full: what each of its entries was, for the next steps (live: the
+// entries left for step 4, all computed).
+void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t live) {
+    KeptEntries& ke = kept[list];
+    const unsigned* todo = work[list]->todo;
+    for (size_t j = j0; j < j1; ++j) ke.kind[todo ? todo[j] : j] = sc.apart[j - j0] ? keptApart : keptUnknown;
+    const InteractionContainer& intrs = scene->interactions;
+    const Scratch::Entry* entries = sc.entries.data();
+    unsigned char kind = keptUnknown; // (of the last kind looked up)
+    const Scratch::Entry* kindOf = nullptr;
+    for (size_t e = 0; e < live; ++e) {
+        const Scratch::Entry& x = entries[e];
+        const uint32_t where = intrs.contactOf[x.k];
+        if (!x.fused || where == InteractionContainer::noContact) continue; // (a new contact, or one the law ended)
+        if (!kindOf || x.law != kindOf->law || x.fused != kindOf->fused) {
+            kind = keptKindOf(x.law, x.fused, x.pass);
+            kindOf = &x;
+        }
+        ke.kind[x.i] = kind;
+        ke.where[x.i] = where;
+    }
+}
+
+// A batch computed again from its kept entries (false, with nothing done but gaps of pairs still
+// apart recorded, which the gathering records the same, if one of them cannot be taken).
 bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD, const BodyColumns& columns, std::string& error) {
-    const KeptBatch& kb = kept[list][j0 / batchEntries];
-    if (kb.generation != keptGeneration || kb.end != j1) return false;
+    const KeptEntries& ke = kept[list];
     InteractionContainer& intrs = scene->interactions;
     Scratch& sc = *scratch[threadNumber()];
     if (sc.contacts.size() < batchEntries) return false; // (sized by gatherBatch)
@@ -698,32 +708,35 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, co
     float* gaps = skin.active ? skin.gap[list].data() : nullptr;
     unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     Contact* const contacts = sc.contacts.data();
+    char* const kinds = sc.apart.data(); // (the contacts' kinds, in this step's scratch)
     const ContactPool* pool = nullptr;
     uint32_t poolIndex = InteractionContainer::noContact;
     size_t n = 0;
-    // (a batch found not to be the same after some pairs still apart recorded their gaps: the
-    // gathering records the same ones again)
-    for (size_t e = 0; e < j1 - j0; ++e) {
-        const unsigned i = todo ? todo[j0 + e] : (unsigned)(j0 + e);
-        if (i != kb.position[e]) return false;
+    for (size_t j = j0; j < j1; ++j) {
+        const unsigned i = todo ? todo[j] : (unsigned)j;
+        const unsigned char kind = ke.kind[i];
+        if (kind == keptUnknown) return false;
         const long k = pairs[i];
-        if (kb.where[e] == InteractionContainer::noContact) { // a pair still apart then: still apart now?
+        if (kind == keptApart) { // a pair still apart then: still apart now?
             if (!(quick && !wasReal[k] && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD))) return false;
             continue;
         }
         const uint32_t where = contactOf[k];
-        if (where != kb.where[e] || !wasReal[k]) return false;
+        if (where != ke.where[i] || !wasReal[k]) return false;
         if (InteractionContainer::poolOf(where) != poolIndex) {
             poolIndex = InteractionContainer::poolOf(where);
             pool = intrs.pools[poolIndex].get();
         }
         const uint32_t slot = InteractionContainer::slotOf(where);
-        contacts[n++] = Contact(&intrs, k, pool->geom(slot), pool->phys(slot), ids[2 * k], ids[2 * k + 1]);
+        contacts[n] = Contact(&intrs, k, pool->geom(slot), pool->phys(slot), ids[2 * k], ids[2 * k + 1]);
+        kinds[n++] = (char)kind;
     }
-    size_t first = 0;
-    for (const KeptBatch::Run& r : kb.runs) {
-        applyRun(r.law, r.fused, r.pass, contacts + first, r.count, sc.flags.data(), columns, error);
-        first += r.count;
+    for (size_t first = 0; first < n;) { // runs of one kind, in order
+        size_t last = first + 1;
+        while (last < n && kinds[last] == kinds[first]) ++last;
+        const KeptKind& r = keptKinds[(unsigned char)kinds[first]];
+        applyRun(r.law, r.fused, r.pass, contacts + first, last - first, sc.flags.data(), columns, error);
+        first = last;
     }
     ++sc.replayed;
     return true;
@@ -735,7 +748,6 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, co
 // Interaction.
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
-    static_assert(chunkEntries % batchEntries == 0, "a chunk is whole batches (kept batches are found by j0 / batchEntries)");
     const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
     if (fusedPasses && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
@@ -743,7 +755,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
     if (n > 0) computeGeometry(sc, n, columns);
     const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
-    if (fusedPasses) keepBatch(sc, list, j0, j1, n, live);
+    if (fusedPasses) keepBatch(sc, list, j0, j1, live);
 }
 
 void InteractionLoop::action() {
@@ -821,7 +833,12 @@ void InteractionLoop::gatherTodo(int list, const Real* skipAbove) {
         w.count = count;
         w.todo = entries.data();
     }
-    kept[list].resize((w.count + batchEntries - 1) / batchEntries);
+    KeptEntries& ke = kept[list]; // (all unknown in a new generation)
+    if (ke.generation != keptGeneration || ke.kind.size() != pairs.size()) {
+        ke.kind.assign(pairs.size(), keptUnknown);
+        ke.where.resize(pairs.size());
+        ke.generation = keptGeneration;
+    }
 }
 
 // With several threads: this thread's own chunks from the front, then the others' last chunks (their
@@ -900,6 +917,7 @@ void InteractionLoop::runLoop() {
     if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (the kept batches are stale)
         keptKey = key;
         ++keptGeneration;
+        keptKindCount.store(0);
     }
     if (kept.size() != (size_t)threads) kept.resize(threads);
     const Vector3r* skinRef = skin.active && !skin.fresh ? skin.refPos->data() : nullptr; // (D = 0 in a fresh epoch)

@@ -10,6 +10,7 @@
 #include <lib/base/ChunkQueue.hpp>
 #include <pkg/common/IntrCallback.hpp>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <set>
 #include <string>
@@ -183,6 +184,7 @@ private:
             IGeomFunctor* fused; // an existing contact whose Ig2 and Law2 functors have a fast pass (else null)
             KernelPasses::Pass pass; // (then that pass)
             char real;          // the Ig2 functor's answer
+            unsigned i;         // its position in the thread list
         };
         std::vector<Entry> entries;
         std::vector<Contact> contacts; // (entry e: contacts[e])
@@ -212,28 +214,32 @@ private:
     // one run of step 4: contacts c[0] .. c[n-1] of one Law2 functor (with the Ig2 functor of its fast pass, or not)
     void applyRun(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass, Contact* c, size_t n, char* flags, const BodyColumns& columns,
             std::string& error);
-    // Kept batches (doc/storage.md, "Kept batches"): a batch whose entries were all existing contacts
-    // of fast passes or potential pairs still apart is kept as its entries' positions in the thread
-    // list and where their records were (noContact: apart), with its runs of one pass. While the same
-    // positions come to be tested, each contact's record did not move, each pair apart is still apart
-    // (tested again), and nothing the gathering reads changed (keptKey), the next step computes it
-    // from these without gathering (replayBatch): what gatherBatch would have found, in the same
-    // order, so the same bits. In a packing whose contacts last (most steps of most runs) this is
-    // most batches.
-    struct KeptBatch {
-        struct Run {
-            LawFunctor* law;
-            IGeomFunctor* fused;
-            KernelPasses::Pass pass;
-            size_t count;
-        };
-        long long generation = -1;     // keptGeneration when kept (-1: none)
-        size_t end = 0;                // the batch's end in the list's todo (j1)
-        std::vector<unsigned> position; // per entry: its position in the thread list
-        std::vector<uint32_t> where;   // per entry: InteractionContainer::contactOf then (noContact: a pair still apart)
-        std::vector<Run> runs;
+    // Kept entries (doc/storage.md, "Kept batches"): what each entry of a thread list was when it
+    // was last gathered, if that can be taken again without gathering: a potential pair still apart,
+    // or an existing contact of a fast pass that lasted (where its record was, and which pass). A
+    // batch whose entries are all kept is computed from these (replayBatch) while each contact's
+    // record did not move, each pair apart is still apart (tested again), and nothing the gathering
+    // reads changed (keptKey): what gatherBatch would have found, in the same order, so the same bits.
+    // Kept by entry of the list, not by batch: an entry that starts or stops being tested (the skin)
+    // shifts the batches after it, not what their entries were. In a packing whose contacts last (most
+    // steps of most runs) most batches are taken this way.
+    static constexpr unsigned char keptUnknown = 255, keptApart = 254; // (else: an index into keptKinds)
+    struct KeptEntries {
+        long long generation = -1;       // keptGeneration when filled (else all unknown)
+        std::vector<unsigned char> kind; // per entry of the list: keptUnknown, keptApart or a contact's kind
+        std::vector<uint32_t> where;     // per entry: a contact's InteractionContainer::contactOf then
     };
-    std::vector<std::vector<KeptBatch>> kept; // [list][batch]
+    std::vector<KeptEntries> kept; // [list]
+    // the (Law2 functor, fused Ig2 functor, pass) of the kept contacts, each kind once (made during the
+    // parallel part: published by keptKindCount; emptied with every new keptGeneration)
+    struct KeptKind {
+        LawFunctor* law;
+        IGeomFunctor* fused;
+        KernelPasses::Pass pass;
+    };
+    std::array<KeptKind, keptApart> keptKinds;
+    std::atomic<int> keptKindCount{0};
+    unsigned char keptKindOf(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass); // keptUnknown if the table is full
     // What the entries' functors, objects and order depend on besides their positions and records:
     // a change of any makes every kept batch stale (a new keptGeneration).
     struct KeptKey {
@@ -243,7 +249,7 @@ private:
         }
     } keptKey;
     long long keptGeneration = 0;
-    void keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t n, size_t live);
+    void keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t live);
     bool replayBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD, const BodyColumns& columns, std::string& error);
     bool stillApart(const Body::id_t* ids, size_t i, float* gaps, unsigned char* withFacet, const Real* twiceD) const;
     void swapPair(long k);
