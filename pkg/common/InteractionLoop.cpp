@@ -914,7 +914,7 @@ void InteractionLoop::runLoop() {
         }
     prepareSkin(quick);
     const KeptKey key{intrs.changes, s.serial, threadPairsBuild, lawDispatcher->tableGeneration(), externalWrites()};
-    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (the kept batches are stale)
+    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (every kept entry is stale)
         keptKey = key;
         ++keptGeneration;
         keptKindCount.store(0);

@@ -46,7 +46,7 @@ public:
         v.attr("fusedPasses", fusedPasses, "Run the geometry and the law of existing contacts in one pass, two contacts at a time, where both functors are kernels (Ig2_Sphere_Sphere_ScGeom or Ig2_Facet_Sphere_ScGeom with any Law2 functor on ScGeom written as a kernel: doc/contact-laws.md): the same results, less bookkeeping");
         v.attr("fastPath", fastPath, "Reject distant potential sphere-sphere and facet-sphere pairs from contiguous positions, without calling their Ig2 functor (same results as the general path)");
         v.attr("pairsTested", pairsTested, "Interactions (contacts and potential ones) the last step looked at; with fastPath, the potential pairs certain to stay apart since their last test are left out (for profiling)", Attr::readonly | Attr::noSave);
-        v.attr("keptBatches", keptBatches, "Batches of contacts the last step computed again as the step before had gathered them, without gathering them (fusedPasses: their entries, functors and records unchanged; for profiling)", Attr::readonly | Attr::noSave);
+        v.attr("keptBatches", keptBatches, "Batches the last step computed from what their entries were when last gathered (lasting contacts of fused passes, pairs still apart), without gathering them again (fusedPasses; the same results; for profiling)", Attr::readonly | Attr::noSave);
         v.attr("threadSplit", threadSplit, "How the pairs were split between threads when saved (thread, count, ...): a loaded scene splits them the same way", Attr::hidden);
     }
     void action() override;
@@ -241,7 +241,7 @@ private:
     std::atomic<int> keptKindCount{0};
     unsigned char keptKindOf(LawFunctor* law, IGeomFunctor* fused, KernelPasses::Pass pass); // keptUnknown if the table is full
     // What the entries' functors, objects and order depend on besides their positions and records:
-    // a change of any makes every kept batch stale (a new keptGeneration).
+    // a change of any makes every kept entry stale (a new keptGeneration).
     struct KeptKey {
         long long changes = -1, serial = -1, pairsBuild = -1, lawTable = -1, writes = -1;
         bool operator==(const KeptKey& o) const {
