@@ -389,7 +389,7 @@ template <class T> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, lo
         h.angVel[id + i] = angVel.lane(i);
         h.pos[id + i] = pos.lane(i);
         maxV2 = std::max(maxV2, h.vel[id + i].squaredNorm());
-        st.spins[id + i] = 1;
+        st.spins[id + i] = (h.angVel[id + i].array() != 0).any(); // (no spin: turnStep would leave it as it is)
     }
     return true;
 }
