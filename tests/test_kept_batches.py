@@ -12,6 +12,17 @@ from yade import O, geom, pack
 from yade.utils import *  # noqa: F401,F403
 
 
+def engines(fused):
+    """Spheres and facets, Cundall-Strack, gravity and damping; the interaction loop returned."""
+    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                           [Law2_ScGeom_FrictPhys_CundallStrack()])
+    loop.fusedPasses = fused
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
+                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=.4)]
+    O.dt = .5 * PWaveTimeStep()
+    return loop
+
+
 def lattice(fused, threads=1):
     """A compressed simple cubic lattice in a facet box (every contact lasts), spheres spinning."""
     O.reset()
@@ -28,13 +39,7 @@ def lattice(fused, threads=1):
                 b = sphere((i * a, j * a, k * a), r)
                 b.state.angVel = ((i + j) % 3 - 1, (j + k) % 5 - 2, (i * k) % 3 - 1)
                 O.bodies.append(b)
-    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
-                           [Law2_ScGeom_FrictPhys_CundallStrack()])
-    loop.fusedPasses = fused
-    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
-                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=.4)]
-    O.dt = .5 * PWaveTimeStep()
-    return loop
+    return engines(fused)
 
 
 def state():
@@ -86,12 +91,7 @@ def deposition(fused):
     sp = pack.SpherePack()
     sp.makeCloud((0, 0, 0), (side, side, 1.5 * side), rMean=r, rRelFuzz=.2, num=N, seed=1)
     sp.toSimulation()
-    loop = InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
-                           [Law2_ScGeom_FrictPhys_CundallStrack()])
-    loop.fusedPasses = fused
-    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]), loop,
-                 NewtonIntegrator(gravity=(0, 0, -9.81), damping=.4)]
-    O.dt = .5 * PWaveTimeStep()
+    loop = engines(fused)
     kept, states = 0, []
     for step in range(1500):
         O.run(1, True)
