@@ -18,13 +18,24 @@
 namespace yade {
 
 // The two bodies of the contacts of each lane, read from the columns when asked.
+// In a periodic scene (one contact at a time: the fast passes run only in aperiodic scenes) body 2 is
+// the image that `image` says (Contact::shifted).
 template <class T> struct ContactBodies {
     const BodyColumns& b;
     LaneIds<T> id1, id2;
+    const Contact* image = nullptr;
     YADE_KERNEL Vec3<T> pos1() const { return gather<T>(b.store.pos, id1); }
-    YADE_KERNEL Vec3<T> pos2() const { return gather<T>(b.store.pos, id2); }
+    YADE_KERNEL Vec3<T> pos2() const {
+        if constexpr (std::is_same<T, Real>::value)
+            if (image) return gather<T>(b.store.pos, id2) + vec3(image->shift2);
+        return gather<T>(b.store.pos, id2);
+    }
     YADE_KERNEL Vec3<T> vel1() const { return gather<T>(b.store.vel, id1); }
-    YADE_KERNEL Vec3<T> vel2() const { return gather<T>(b.store.vel, id2); }
+    YADE_KERNEL Vec3<T> vel2() const {
+        if constexpr (std::is_same<T, Real>::value)
+            if (image) return gather<T>(b.store.vel, id2) + vec3(image->shiftVel2);
+        return gather<T>(b.store.vel, id2);
+    }
     YADE_KERNEL Vec3<T> angVel1() const { return gather<T>(b.store.angVel, id1); }
     YADE_KERNEL Vec3<T> angVel2() const { return gather<T>(b.store.angVel, id2); }
     YADE_KERNEL PairMotion<T> motion() const { return {pos1(), pos2(), vel1(), vel2(), angVel1(), angVel2()}; }
@@ -75,11 +86,12 @@ public:
     }
     void goBatch(const Contact* c, size_t n, char* keep) final {
         const BodyColumns cols{scene->bodies.hot().columns(), nullptr, nullptr};
-        for (size_t j = 0; j < n; ++j) keep[j] = one(static_cast<G&>(*c[j].geom), static_cast<P&>(*c[j].phys), c[j].id1, c[j].id2, cols);
+        for (size_t j = 0; j < n; ++j)
+            keep[j] = one(static_cast<G&>(*c[j].geom), static_cast<P&>(*c[j].phys), c[j].id1, c[j].id2, cols, c[j].shifted ? &c[j] : nullptr);
     }
 
 private:
-    bool one(G& geom, P& phys, Body::id_t id1, Body::id_t id2, const BodyColumns& cols) {
+    bool one(G& geom, P& phys, Body::id_t id1, Body::id_t id2, const BodyColumns& cols, const Contact* image = nullptr) {
         Derived& law = static_cast<Derived&>(*this);
         const auto values = G::template Values<Real>::of(geom);
         if (values.apart()) {
@@ -88,7 +100,7 @@ private:
         }
         const bool live[1] = {true};
         Rows<P, Real> rows{{&phys}, {true}};
-        const ContactBodies<Real> bodies{cols, {{id1}}, {{id2}}};
+        const ContactBodies<Real> bodies{cols, {{id1}}, {{id2}}, image};
         const LaneEnergy<Real> energy{scene->trackEnergy ? &scene->energy : nullptr, live};
         const ContactForce<Real> f = law.template kernel<Real>(values, rows, bodies, energy);
         if (f.apply) scene->forces.addContact(id1, id2, eigen(f.f1), eigen(f.t1), eigen(f.t2));

@@ -29,7 +29,8 @@ public:
     virtual Real quickRejectFactor() const { return -1; }
     // The batched form: the geometry of the potential or real interactions c[0] .. c[n-1], all
     // of one pair of shape types taken in this functor's order; result[j] is go()'s answer for
-    // c[j] (whose geom is set when the functor made one). The default calls go() once per
+    // c[j] (whose geom is set when the functor made one); in a periodic scene body 2 is the image the
+    // contact says (Contact::shifted). The default calls go() once per
     // contact (an adapter for functors written in the one-contact form); the library's functors
     // derive from IGeomFunctorBatched.
     virtual void goBatch(const BodyColumns& bodies, Contact* c, size_t n, char* result);
@@ -54,8 +55,14 @@ public:
         const Shape* const* shape = b.shape;
         for (size_t j = 0; j < n; ++j) {
             Contact& x = c[j];
-            result[j] = d.Derived::go(static_cast<const S1&>(*shape[x.id1]), static_cast<const S2&>(*shape[x.id2]), cols.kinematics(x.id1),
-                    cols.kinematics(x.id2), Vector3r::Zero(), false, x);
+            if (__builtin_expect(x.shifted, 0)) {
+                const Kinematics k2 = cols.kinematics(x.id2);
+                const Vector3r pos2 = k2.pos + x.shift2, vel2 = k2.vel + x.shiftVel2;
+                result[j] = d.Derived::go(static_cast<const S1&>(*shape[x.id1]), static_cast<const S2&>(*shape[x.id2]), cols.kinematics(x.id1),
+                        Kinematics{pos2, vel2, k2.angVel, k2.ori}, Vector3r::Zero(), false, x);
+            } else
+                result[j] = d.Derived::go(static_cast<const S1&>(*shape[x.id1]), static_cast<const S2&>(*shape[x.id2]), cols.kinematics(x.id1),
+                        cols.kinematics(x.id2), Vector3r::Zero(), false, x);
         }
     }
 

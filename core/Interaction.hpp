@@ -55,6 +55,10 @@ struct Contact {
     IPhys* phys = nullptr;
     Body::id_t id1 = -1, id2 = -1;
     std::shared_ptr<IGeom>* made = nullptr; // where a new geometry goes (the loop's scratch)
+    // In a periodic scene (shifted): body 2's image is at pos2 + shift2 and moves at vel2 + shiftVel2
+    // (its cellDist through O.cell: hSize·cellDist, velGrad·shift2). The functors see the image.
+    bool shifted = false;
+    Vector3r shift2 = Vector3r::Zero(), shiftVel2 = Vector3r::Zero();
     bool isReal() const { return geom && phys; }
     Interaction& interaction() const; // (InteractionContainer.cpp)
     Contact() = default;

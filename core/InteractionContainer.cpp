@@ -237,6 +237,7 @@ const InteractionContainer::Ptr& InteractionContainer::operator[](size_t k) cons
     if (!rec.object) {
         rec.object = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
         rec.object->iterBorn = iterBorn[k];
+        if (periodic) rec.object->cellDist = cellDist[k];
         if (contactOf[k] != noContact) const_cast<InteractionContainer*>(this)->makeViews(k);
         else {
             rec.object->geom = rec.geom;
@@ -251,6 +252,7 @@ InteractionContainer::Ptr InteractionContainer::snapshot(size_t k) const {
     if (object(k)) return records[recordOf[k]].object;
     auto I = std::make_shared<Interaction>(pairIds[2 * k], pairIds[2 * k + 1]);
     I->iterBorn = iterBorn[k];
+    if (periodic) I->cellDist = cellDist[k];
     if (contactOf[k] != noContact) {
         const ContactPool& P = pool(contactOf[k]);
         const size_t s = slotOf(contactOf[k]);
@@ -336,6 +338,7 @@ bool InteractionContainer::append(id_t a, id_t b, Ptr I) {
     contactOf.push_back(noContact);
     pairIds.push_back(a);
     pairIds.push_back(b);
+    if (periodic) cellDist.push_back(I ? I->cellDist : Vector3i::Zero());
     partners[a].push_back(Partner{b, k});
     partners[b].push_back(Partner{a, k});
     if (I) { // (its geom and phys join a pool at the next syncObjects())
@@ -409,6 +412,7 @@ void InteractionContainer::eraseAt(size_t idx) {
         pairIds[2 * idx + 1] = pairIds[2 * last + 1];
         wasReal[idx] = wasReal[last];
         iterBorn[idx] = iterBorn[last];
+        if (periodic) cellDist[idx] = cellDist[last];
         relinkPartner(pairIds[2 * idx], (uint32_t)last, (uint32_t)idx);
         relinkPartner(pairIds[2 * idx + 1], (uint32_t)last, (uint32_t)idx);
     }
@@ -417,7 +421,13 @@ void InteractionContainer::eraseAt(size_t idx) {
     pairIds.resize(2 * last);
     wasReal.pop_back();
     iterBorn.pop_back();
+    if (periodic) cellDist.pop_back();
     ++changes;
+}
+
+void InteractionContainer::setPeriodic(bool p) {
+    periodic = p;
+    cellDist.assign(p ? size() : 0, Vector3i::Zero());
 }
 
 void InteractionContainer::reserve(size_t n) {
@@ -427,6 +437,7 @@ void InteractionContainer::reserve(size_t n) {
     pairIds.reserve(2 * n);
     wasReal.reserve(n);
     iterBorn.reserve(n);
+    if (periodic) cellDist.reserve(n);
 }
 
 void InteractionContainer::reservePartners(const std::vector<uint32_t>& more) {
@@ -452,6 +463,7 @@ void InteractionContainer::clear() {
     pairIds.clear();
     wasReal.clear();
     iterBorn.clear();
+    cellDist.clear();
     for (auto& p : partners) p.clear();
     ++changes;
 }

@@ -129,6 +129,11 @@ public:
     std::vector<id_t> pairIds; // 2 per interaction
     std::vector<char> wasReal;
     std::vector<long long> iterBorn; // the step each pair was added (Interaction.iterBorn)
+    // In a periodic scene (periodic; empty otherwise): per pair, Interaction.cellDist, by how many
+    // cells (along the edges of O.cell.hSize) body 2's image is shifted from body 2.
+    std::vector<Vector3i> cellDist;
+    bool periodic = false;
+    void setPeriodic(bool p); // (every pair's cellDist zero)
     long long iterNow = 0;           // the step new pairs are born in (set by Scene::beginStep)
     // Where a contact's record is: pool index (high bits) and slot, or noContact.
     static constexpr uint32_t noContact = 0xffffffffu, slotBits = 26, maxPools = 64;

@@ -69,6 +69,15 @@ void Scene::setThreads(int n) {
     energy.setThreads(n);
 }
 
+void Scene::setPeriodic(bool periodic) {
+    if (periodic == isPeriodic) return;
+    isPeriodic = periodic;
+    // the pairs' cellDist columns exist only in a periodic scene; the collider sees the change
+    // (bodies.changes) and starts afresh
+    interactions.setPeriodic(periodic);
+    ++bodies.changes;
+}
+
 void Scene::setDt(Real value) {
     // (0 is accepted, as in the reference: steps that advance nothing, e.g. to create contacts in place)
     if (!std::isfinite(value) || value < 0)
@@ -97,6 +106,7 @@ void Scene::beginStep() {
     interactions.resizeBodies(bodies.size());
     interactions.iterNow = iter;
     if (trackEnergy) energy.resetInstantaneous();
+    if (isPeriodic) cell->integrate(dt);
     newContactBodies.clear();
     failedEngine.clear();
 }

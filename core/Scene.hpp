@@ -1,6 +1,7 @@
 // The whole simulation: bodies, interactions, forces, materials, engines and time (1.2.1).
 #pragma once
 #include <core/BodyContainer.hpp>
+#include <core/Cell.hpp>
 #include <core/EnergyTracker.hpp>
 #include <core/Engine.hpp>
 #include <core/ForceContainer.hpp>
@@ -25,6 +26,12 @@ public:
     Real time = 0;
     Real dt = 1e-8;
     bool isPeriodic = false;
+    // O.cell (kept while not periodic, as the reference keeps it; Python sees None then). Each step
+    // deforms it first (beginStep) while isPeriodic.
+    std::shared_ptr<Cell> cell = std::make_shared<Cell>();
+    // O.periodic: periodic from the next step on (the collider starts afresh, potential pairs are
+    // dropped, contacts kept with cellDist zero).
+    void setPeriodic(bool periodic);
     bool trackEnergy = false;
     // O.timingEnabled: engines accumulate execTime/execCount (one clock read per engine run).
     static bool timingEnabled;

@@ -384,6 +384,7 @@ public:
         s->time = parseReal(sc.attr("time"));
         s->setDt(parseReal(sc.attr("dt")));
         s->trackEnergy = sc.attr("trackEnergy") == "1";
+        if (sc.attrs.count("periodic")) s->setPeriodic(sc.attr("periodic") == "1"); // (before the interactions: their cellDist)
         bodyChanges = std::stoll(sc.attr("bodyChanges"));
     }
     // A whole section of small size (tags, energy, permanent forces).
@@ -399,6 +400,16 @@ public:
             for (const Node& t : n.children) s->tags[utf8(t.attr("name"), "a tag")] = utf8(t.text, "a tag");
         } else if (n.tag == "energy") {
             for (const Node& t : n.children) s->energy.set(utf8(t.attr("name"), "an energy term"), parseReal(t.text), t.attr("cumulative") == "1");
+        } else if (n.tag == "cell") {
+            if (n.children.size() != 1) throw FormatError("<cell> must hold one Cell");
+            auto c = readAs<Cell>(r, n.children[0], "a Cell");
+            if (!c) throw FormatError("<cell> holds None");
+            try {
+                c->check();
+            } catch (const std::invalid_argument& e) {
+                throw FormatError(e.what());
+            }
+            s->cell = c;
         } else if (n.tag == "permanentForces") {
             needBodies("permanent forces");
             for (const Node& f : n.children) {
@@ -482,6 +493,7 @@ private:
         if (!C.insertPotential(I->id1, I->id2)) throw FormatError("the same interaction appears twice");
         const size_t k = C.size() - 1;
         if (I->iterBorn >= 0) C.iterBorn[k] = I->iterBorn;
+        if (C.periodic) C.cellDist[k] = I->cellDist;
         if (I->geom && I->phys) C.restoreContact(ContactPool::Header{I->id1, I->id2, (uint32_t)k, 0, I->iterMadeReal}, *I->geom, *I->phys);
         else if (I->geom || I->phys) C.restoreUnpooled(k, I);
     }
@@ -545,6 +557,7 @@ void saveXml(Scene& s, ByteSink& out) {
     sc.attrs["stopAtTime"] = fmt(s.stopAtTime);
     sc.attrs["time"] = fmt(s.time);
     sc.attrs["trackEnergy"] = s.trackEnergy ? "1" : "0";
+    if (s.isPeriodic) sc.attrs["periodic"] = "1";
     b += " <scene";
     for (const auto& kv : sc.attrs) b += " " + kv.first + "=\"" + kv.second + "\"";
     b += ">\n";
@@ -569,6 +582,11 @@ void saveXml(Scene& s, ByteSink& out) {
         b += "</term>\n";
     }
     w.close("energy", 2);
+    if (s.isPeriodic) {
+        w.open("cell", 2);
+        w.object(s.cell, 0, 3);
+        w.close("cell", 2);
+    }
     w.open("materials", 2);
     for (const auto& m : s.materials) w.object(m, 0, 3);
     w.close("materials", 2);

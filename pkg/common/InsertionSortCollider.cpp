@@ -6,10 +6,12 @@
 
 namespace yade {
 
-bool InsertionSortCollider::needsRun() {
+// limit: how far a body may have moved (the sweep, less what the cell's deformation took of it).
+bool InsertionSortCollider::needsRun(Real limit) {
     const BodyContainer& bodies = scene->bodies;
     if (bodies.changes != lastBodyChanges) return true;
-    const Real limit2 = sweep * sweep;
+    if (!(limit > 0)) return true;
+    const Real limit2 = limit * limit;
     const long n = (long)bodies.size();
     int moved = 0;
     const MotionRecord& m = scene->motion; // (the skin protocol: core/MotionRecord.hpp)
@@ -19,7 +21,7 @@ bool InsertionSortCollider::needsRun() {
         if (m.step() == travelledTo + 1) travelled += m.maxStep() * (1 + 1e-12) + 1e-15 * (scale + sweep);
         else if (m.step() != travelledTo) travelled = Inf;
         travelledTo = m.step();
-        if (travelled < sweep * (1 - 1e-9)) return false;
+        if (travelled < limit * (1 - 1e-9)) return false;
         const Vector3r* pos = m.positions();
 #pragma omp parallel for schedule(static) reduction(| : moved)
         for (long id = 0; id < n; ++id) moved |= boxes[id].collidable && (pos[id] - boxes[id].refPos).squaredNorm() > limit2; // (3.1.6)
@@ -215,7 +217,11 @@ void InsertionSortCollider::action() {
             for (const auto& e : axis)
                 if (e.id < 0 || !scene->bodies.exists(e.id) || !collidable(scene->bodies[e.id])) lastBodyChanges = -1;
     }
-    if (!needsRun()) return;
+    if (scene->isPeriodic) {
+        periodicAction();
+        return;
+    }
+    if (!needsRun(sweep)) return;
     ++numAction;
     updateBounds();
     const BodyContainer& bodies = scene->bodies;

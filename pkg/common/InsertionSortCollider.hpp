@@ -9,12 +9,15 @@ class InsertionSortCollider : public Collider {
 public:
     static constexpr const char* classDoc = "Collider using sweep and prune with insertion sort on three axes (3.1.3); bounds are enlarged by the Verlet distance so that it reruns only when bodies moved farther than that.";
     Real verletDist = -0.5;
+    bool allowBiggerThanPeriod = false;
     long long numAction = 0, numReinit = 0;
     template <class V> void visit(V& v) {
         Collider::visit(v);
         v.attr("verletDist", verletDist,
                 "Enlargement of the bounds (the Verlet distance ΔL of 3.1.3); negative: that fraction of the smallest sphere radius (replaced by that distance at the first run, as in the reference)",
                 Attr::finite);
+        v.attr("allowBiggerThanPeriod", allowBiggerThanPeriod,
+                "In a periodic scene, accept bodies whose bound spans half the cell or more along an axis (each then meets the nearest image of every body along that axis); otherwise such a body stops the run with an error");
         v.attr("numAction", numAction, "How many times the collider has run (not counting skipped steps)", Attr::readonly | Attr::noSave);
         v.attr("numReinit", numReinit, "How many times the sorted lists were rebuilt from scratch", Attr::readonly | Attr::noSave);
         // run-time state, saved so that a loaded scene continues exactly
@@ -62,7 +65,7 @@ private:
     // integrator's steps up to the position mirror of step travelledTo; scale: the largest coordinate then.
     Real travelled = Inf, scale = 0;
     long long travelledTo = -2;
-    bool needsRun();
+    bool needsRun(Real limit);
     void updateBounds();
     void rebuild();
     void insertionSort(std::vector<Bound1D>& list, std::vector<std::pair<Body::id_t, Body::id_t>>& inversions) const;
@@ -77,6 +80,19 @@ private:
         return true;
     }
     bool collidable(const std::shared_ptr<Body>& b) const { return b && b->shape && b->bound; }
+
+    // The periodic scene (3.6.2, InsertionSortColliderPeriodic.cpp): every run finds the overlapping
+    // bounds in the cell's own coordinates (fractions of its edges), each pair with the shift of body
+    // 2's image (cellDist).
+    Matrix3r lastHSize = Matrix3r::Constant(NaN); // the cell at the last periodic run
+    Real cellDrift() const;                       // how far any image may have moved with the cell since then
+    void periodicAction();
+    struct PeriodicBox {
+        Vector3r lo, hi; // in cell coordinates, not wrapped
+        Body::id_t id;
+    };
+    std::vector<PeriodicBox> periodicBoxes(); // of the collidable bodies (throws for one too big)
+    void periodicPairs(const std::vector<PeriodicBox>& boxes, std::vector<std::pair<std::pair<Body::id_t, Body::id_t>, Vector3i>>& found) const;
 };
 
 } // namespace yade

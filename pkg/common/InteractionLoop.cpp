@@ -333,6 +333,7 @@ void InteractionLoop::swapPair(long k) {
     InteractionContainer& intrs = scene->interactions;
     if (Interaction* I = intrs.object((size_t)k)) I->swapOrder();
     std::swap(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1]);
+    if (intrs.periodic) intrs.cellDist[k] = -intrs.cellDist[k];
     if (intrs.contactOf[k] != InteractionContainer::noContact) {
         ContactPool::Header& h = intrs.pool(intrs.contactOf[k]).header(InteractionContainer::slotOf(intrs.contactOf[k]));
         std::swap(h.id1, h.id2);
@@ -389,7 +390,10 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     float* gaps = skin.active ? skin.gap[list].data() : nullptr;
     unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
-    const bool fuse = fusedPasses;
+    const bool fuse = fuseNow;
+    // a periodic scene: each pair's body 2 is the image of its cellDist (Contact::shifted)
+    const Vector3i* cellDist = intrs.periodic ? intrs.cellDist.data() : nullptr;
+    const Matrix3r hSize = scene->cell->hSize, velGrad = scene->cell->velGrad;
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
     Body::id_t* ids = intrs.pairIds.data();
@@ -469,6 +473,11 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
         entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1, (unsigned)i} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0, (unsigned)i};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
+        if (cellDist) {
+            contacts[n].shifted = true;
+            contacts[n].shift2 = hSize * cellDist[k].cast<Real>();
+            contacts[n].shiftVel2 = velGrad * contacts[n].shift2;
+        }
         if (!fused) { // (may get a new geometry)
             contacts[n].made = made + n;
             if (made[n]) made[n].reset(); // (left by a step that threw)
@@ -749,13 +758,13 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, co
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
-    if (fusedPasses && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
+    if (fuseNow && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
     if (n > 0) computeGeometry(sc, n, columns);
     const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
-    if (fusedPasses) keepBatch(sc, list, j0, j1, live);
+    if (fuseNow) keepBatch(sc, list, j0, j1, live);
 }
 
 void InteractionLoop::action() {
@@ -896,7 +905,8 @@ void InteractionLoop::runLoop() {
         InteractionContainer& intrs;
         ~Sweep() { intrs.sweep(); }
     } sweepAfter{intrs};
-    const bool quick = fastPath && prepareQuickReject();
+    fuseNow = fusedPasses && !s.isPeriodic;
+    const bool quick = fastPath && !s.isPeriodic && prepareQuickReject(); // (its distances know no images)
     if ((int)scratch.size() < threads) {
         scratch.clear();
         for (int t = 0; t < threads; ++t) scratch.emplace_back(new Scratch);
@@ -914,7 +924,7 @@ void InteractionLoop::runLoop() {
         }
     prepareSkin(quick);
     const KeptKey key{intrs.changes, s.serial, threadPairsBuild, lawDispatcher->tableGeneration(), externalWrites()};
-    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (every kept entry is stale)
+    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fuseNow) { // (every kept entry is stale)
         keptKey = key;
         ++keptGeneration;
         keptKindCount.store(0);

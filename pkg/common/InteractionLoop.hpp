@@ -76,6 +76,9 @@ private:
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
     const Real* shapeRadius = nullptr;
+    // fusedPasses in this step (not in a periodic scene: the passes and the kept entries take body 2
+    // where it is, not its image)
+    bool fuseNow = true;
     bool quickFromIntegrator = false; // this step's centers are the integrator's positions (the radii cached)
     bool cacheBuilt = false;      // prepareShapes() rebuilt shapeCache in this step
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid

@@ -181,6 +181,11 @@ struct IntegratorStep {
     const Vector3r* T;
     char* spins;               // NewtonIntegrator::spinning
     const Vector3r* reference; // the skin's reference positions (MotionRecord::Write), or null
+    // A periodic cell whose homogeneous field the bodies follow (Cell.homoDeform 1, 2 or 3): the
+    // change of velGrad since the last step, the last step's velGrad, and whether the convective
+    // term (2, 3) is added.
+    bool homo, convective;
+    Matrix3r dVelGrad, prevVelGrad;
 };
 
 // A body's energy terms in a step, or their sums over bodies (kin: all the kinetic energy, or its
@@ -200,6 +205,7 @@ struct AsphericalUpdate {
 
 // Translation (3.5.1): the acceleration of the gathered force on the free translations, with gravity
 // (damped with it when dampGravity) and the damping (3.5.12); undamped: the same before damping.
+// (vel: the velocity the damping's sign reads; in a periodic cell, the fluctuation about the homogeneous field)
 static inline Vector3r linearAccel(const IntegratorStep& st, const Vector3r& force, Real mass, int blocked, bool damped,
         const Vector3r& vel, const Vector3r& gFree, Vector3r& undamped) {
     Vector3r accel = accelOf(force, Vector3r::Constant(mass), blocked, 0);
@@ -276,13 +282,25 @@ static inline void rotateAspherical(const IntegratorStep& st, long id, Real mass
     angVel = t.angVel;
 }
 
-// A dynamic body's new velocity and spin (and an aspherical body's orientation) with its energy terms.
+// The homogeneous field of a periodic cell (3.6.1, Cell.homoDeform): the new velocity with the field's
+// convective acceleration velGrad·v (2, 3: the last step's velGrad, v before the step, v(t - Δt/2)),
+// then the change of velGrad since the last step times the position before the step.
+static inline void homogeneousField(const IntegratorStep& st, const Vector3r& pos, const Vector3r& accel, Vector3r& vel) {
+    vel = st.convective ? Vector3r(vel + st.dt * (accel + st.prevVelGrad * vel)) : Vector3r(vel + st.dt * accel);
+    vel += st.dVelGrad * pos;
+}
+
+// A dynamic body's new velocity and spin (and an aspherical body's orientation) with its energy terms;
+// Homo (a periodic cell's homogeneous field): the damping reads the fluctuation of the velocity about
+// the field, and the field's convective acceleration is added (homogeneousField).
+template <bool Homo>
 static inline void accelerate(const IntegratorStep& st, long id, int blocked, Real mass, const Vector3r& inertia, Vector3r& vel, Vector3r& angVel,
-        BodyEnergy& e, AsphericalUpdate& a) {
+        BodyEnergy& e, AsphericalUpdate& a, const Vector3r& pos) {
+    const Vector3r fluct = Homo ? Vector3r(vel - st.prevVelGrad * pos) : vel;
     const bool damped = st.lambda != 0 && st.h.isDamped[id];
     const Vector3r gFree = freeGravity(st.g, blocked);
     Vector3r undamped;
-    const Vector3r accel = linearAccel(st, st.F[id], mass, blocked, damped, vel, gFree, undamped);
+    const Vector3r accel = linearAccel(st, st.F[id], mass, blocked, damped, fluct, gFree, undamped);
     const bool asphericalBody = isAspherical(st, inertia, blocked);
     if (__builtin_expect(asphericalBody, 0)) spinFromMomentum(st, id, inertia, angVel, a);
     const bool still = (angVel.array() == 0).all() && (st.T[id].array() == 0).all() && (inertia.array() > 0).all();
@@ -290,7 +308,8 @@ static inline void accelerate(const IntegratorStep& st, long id, int blocked, Re
         rotateAspherical(st, id, mass, inertia, damped, gFree, vel, accel, undamped, angVel, e, a);
     else
         rotateSphere(st, id, mass, inertia, blocked, damped, still, gFree, vel, accel, undamped, angVel, e);
-    vel += st.dt * accel;
+    if constexpr (Homo) homogeneousField(st, pos, accel, vel);
+    else vel += st.dt * accel;
 }
 
 // The stability guard: whether the new state is finite and the orientation a non-zero quaternion (an
@@ -320,7 +339,10 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     Vector3r vel = h.vel[id], angVel = h.angVel[id];
     BodyEnergy e; // (added once the new state is known finite)
     AsphericalUpdate a;
-    if (dynamic) accelerate(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a);
+    if (dynamic) {
+        if (__builtin_expect(st.homo, 0)) accelerate<true>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
+        else accelerate<false>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
+    }
     const Vector3r pos = statePos + vel * st.dt;
     if (!finiteState(pos, vel, angVel, e, h.ori[id])) return false;
     h.vel[id] = vel;
@@ -410,7 +432,7 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
     bool any = sums.any;
     Real maxV2 = x.maxV2, maxMoved2 = x.maxMoved2;
     long diverged = x.diverged;
-    const bool lean = !st.energy && st.moveMask == -1;
+    const bool lean = !st.energy && st.moveMask == -1 && !st.homo;
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
         const long b1 = std::min(hi, b0 + chunkBodies);
         if (lean) { // (free spheres: their own step, two at a time)
@@ -540,6 +562,11 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write
     st.T = s.forces.torqueData();
     st.spins = spinning.data();
     st.reference = motion.reference;
+    const Cell& cell = *s.cell;
+    st.homo = s.isPeriodic && cell.homoDeform >= Cell::homoVel;
+    st.convective = cell.homoDeform >= Cell::homoVel2nd;
+    st.dVelGrad = cell.velGrad - cell.prevVelGrad;
+    st.prevVelGrad = cell.prevVelGrad;
     return st;
 }
 

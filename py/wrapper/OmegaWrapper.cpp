@@ -2,6 +2,7 @@
 #include <chrono>
 #include <core/Functor.hpp>
 #include <core/SceneIO.hpp>
+#include <lib/base/ExternalWrites.hpp>
 #include <pkg/common/InteractionLoop.hpp>
 #include <core/TimeStepper.hpp>
 #include <lib/base/Logging.hpp>
@@ -742,9 +743,14 @@ void bindOmega(py::module_& m) {
                     "Where the error that stopped the last run arose: \"in Class labeled 'label' at iteration N\" (empty if none)")
             .def_property("periodic", [](OmegaProxy&) { return scene().isPeriodic; },
                     [](OmegaProxy&, bool v) {
-                        if (v) throw py::value_error("periodic cells are not supported yet");
-                        scene().isPeriodic = false;
-                    }, "Whether the scene is periodic (always False for now)")
+                        if (v != scene().isPeriodic && omega().isRunning()) throw std::runtime_error("O.periodic cannot change while the simulation runs (O.pause() first)");
+                        scene().setPeriodic(v);
+                        noteExternalWrite();
+                    }, "Whether space is periodic, repeating the cell O.cell (3.6)")
+            .def_property_readonly("cell", [](OmegaProxy&) -> py::object {
+                if (!scene().isPeriodic) return py::none();
+                return py::cast(scene().cell);
+            }, "The periodic cell (None unless O.periodic)")
             .def_property_readonly("numThreads", [](OmegaProxy&) { return scene().threads(); })
             .def("step", [](OmegaProxy&) { omega().step(); }, release(), "Run one step and return")
             .def("run", [](OmegaProxy&, long long nSteps, bool wait) {
