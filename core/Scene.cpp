@@ -72,10 +72,7 @@ void Scene::setThreads(int n) {
 void Scene::setPeriodic(bool periodic) {
     if (periodic == isPeriodic) return;
     isPeriodic = periodic;
-    // the pairs' cellDist columns exist only in a periodic scene; the collider sees the change
-    // (bodies.changes) and starts afresh
-    interactions.setPeriodic(periodic);
-    ++bodies.changes;
+    interactions.setPeriodic(periodic); // (the pairs' cellDist: kept only in a periodic scene)
 }
 
 void Scene::setDt(Real value) {

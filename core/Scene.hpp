@@ -29,8 +29,8 @@ public:
     // O.cell (kept while not periodic, as the reference keeps it; Python sees None then). Each step
     // deforms it first (beginStep) while isPeriodic.
     std::shared_ptr<Cell> cell = std::make_shared<Cell>();
-    // O.periodic: periodic from the next step on (the collider starts afresh, potential pairs are
-    // dropped, contacts kept with cellDist zero).
+    // O.periodic: periodic from the next step on (the pairs there are get cellDist zero; the collider
+    // sees the change and starts afresh).
     void setPeriodic(bool periodic);
     bool trackEnergy = false;
     // O.timingEnabled: engines accumulate execTime/execCount (one clock read per engine run).

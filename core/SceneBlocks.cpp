@@ -19,7 +19,7 @@ constexpr size_t rowsPerBlock = 4096, refsPerBlock = 65536, pairsPerBlock = 6553
 constexpr uint64_t maxBlockBytes = uint64_t(1) << 30;
 
 // The lists of objects a scene holds, in the order they are written.
-enum Section : uint8_t { materials, bodies, engines, miscParams, unpooled, nSections };
+enum Section : uint8_t { materials, bodies, engines, miscParams, unpooled, cell, nSections };
 
 std::string typeName(uint32_t t) {
     std::string s(4, ' ');
@@ -47,6 +47,7 @@ public:
         roots.assign(s.miscParams.begin(), s.miscParams.end());
         section(miscParams, roots);
         section(unpooled, unpooledInteractions());
+        if (s.isPeriodic) section(cell, {s.cell});
         pairs();
         contacts();
         permanentForces();
@@ -125,6 +126,7 @@ private:
             e.put<uint8_t>(cumulative[i]);
             e.put<Real>(values[i]);
         }
+        e.put<uint8_t>(s.isPeriodic);
         block(HEAD);
     }
 
@@ -209,6 +211,7 @@ private:
                 Columns::writeRaw(e, ids.data(), sizeof(int32_t), n);
             }
             Columns::writeRaw(e, &I.iterBorn[k], sizeof(int64_t), n);
+            if (I.periodic) Columns::writeRaw(e, I.cellDist[k].data(), sizeof(Vector3i), n);
             block(PAIR);
         }
     }
@@ -412,6 +415,7 @@ private:
             const bool cumulative = c.get<uint8_t>() != 0;
             s->energy.set(name, c.get<Real>(), cumulative);
         }
+        if (version >= 3) s->setPeriodic(c.get<uint8_t>() != 0);
         if (!c.atEnd()) c.fail("extra bytes at the end of the block");
     }
 
@@ -488,7 +492,7 @@ private:
         return r;
     }
     static const char* sectionName(Section which) {
-        static const char* names[nSections] = {"materials", "bodies", "engines", "O.miscParams", "interactions"};
+        static const char* names[nSections] = {"materials", "bodies", "engines", "O.miscParams", "interactions", "O.cell"};
         return names[which];
     }
 
@@ -512,6 +516,16 @@ private:
         s->setEngines(listOf<Engine>(engines, "an Engine", false));
         s->miscParams = listOf<Serializable>(miscParams, "an object", false);
         unpooledObjects = listOf<Interaction>(unpooled, "an Interaction", false);
+        const auto cells = listOf<Cell>(cell, "a Cell", false);
+        if (cells.size() > 1) throw FormatError("more than one O.cell");
+        if (!cells.empty()) {
+            try {
+                cells[0]->check();
+            } catch (const std::invalid_argument& e) {
+                throw FormatError(e.what());
+            }
+            s->cell = cells[0];
+        }
         tables = {};
         for (auto& l : lists) l = {};
         objectsDone = true;
@@ -525,6 +539,7 @@ private:
         if (n > pairsPerBlock) c.fail("a bad pair count");
         const auto id1 = Columns::readRaw(c, sizeof(int32_t), n), id2 = Columns::readRaw(c, sizeof(int32_t), n);
         const auto born = Columns::readRaw(c, sizeof(int64_t), n);
+        const auto shifts = I.periodic ? Columns::readRaw(c, sizeof(Vector3i), n) : decltype(born){nullptr, 0};
         for (uint64_t i = 0; i < n; ++i) {
             int32_t a, b;
             int64_t iterBorn;
@@ -534,6 +549,7 @@ private:
             if (!s->bodies.exists(a) || !s->bodies.exists(b) || a == b) throw FormatError("an interaction refers to a body that does not exist");
             if (!I.insertPotential(a, b)) throw FormatError("the same interaction appears twice");
             I.iterBorn.back() = iterBorn;
+            if (I.periodic) std::memcpy(I.cellDist.back().data(), shifts.first + i * shifts.second, sizeof(Vector3i));
         }
     }
 

@@ -11,7 +11,7 @@ namespace yade {
 namespace SceneBlocks {
     constexpr char magic[] = "YADE-CLONE-BLOCKS\n"; // (18 bytes)
     constexpr size_t magicSize = sizeof magic - 1;
-    constexpr int formatVersion = 2;
+    constexpr int formatVersion = 3; // (3: the periodic cell)
     void write(Scene& scene, ByteSink& out);
     // Reads a scene from `in`, whose first magicSize bytes (the magic) were already read. Builds a new
     // scene: throws FormatError (and the current scene is never touched).

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import yade
-from yade import O, FrictMat, Vector3, pack, utils
+from yade import O, FrictMat, Matrix3, Vector3, pack, utils
 from yade.pack import SpherePack
 
 
@@ -413,14 +413,14 @@ def test_tosimulation_appends_spheres_with_keywords():
     assert SpherePack().toSimulation() == []
 
 
-def test_tosimulation_of_a_periodic_packing_needs_a_periodic_cell():
+def test_tosimulation_of_a_periodic_packing_sets_the_periodic_cell():
     sp = SpherePack()
-    sp.makeCloud((0, 0, 0), (1, 1, 1), rMean=.1, num=5, periodic=True, seed=1)
-    with pytest.raises(NotImplementedError, match='periodic'):
-        sp.toSimulation()
-    assert len(O.bodies) == 0 and not O.periodic
-    sp.cellSize = (0, 0, 0)  # insert without the cell
+    sp.makeCloud((0, 0, 0), (1, 2, 3), rMean=.1, num=5, periodic=True, seed=1)
     assert len(sp.toSimulation()) == 5
+    assert O.periodic and O.cell.hSize == Matrix3(1, 0, 0, 0, 2, 0, 0, 0, 3) and O.cell.trsf == Matrix3.Identity
+    O.reset()
+    sp.cellSize = (0, 0, 0)  # insert without the cell
+    assert len(sp.toSimulation()) == 5 and not O.periodic
 
 
 def test_pack_module_is_imported_with_yade():

@@ -23,7 +23,7 @@ import zlib
 import pytest
 
 import yade
-from yade import (O, Body, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
+from yade import (O, Matrix3, Body, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
                   Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InsertionSortCollider,
                   InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack,
                   NewtonIntegrator, PyRunner, Quaternion, Serializable, Sphere, State, Vector2, Vector3, Vector3i, setNumThreads)
@@ -337,6 +337,17 @@ def build_zoo():
     O.engines = zoo
     for i, e in enumerate(zoo):
         slots.append(('O.engines[%d]' % i, lambda i=i: O.engines[i]))
+    # the periodic cell, every attribute away from its default (Matrix3 values: set here)
+    O.periodic = True
+    c = O.cell
+    c.hSize = Matrix3(40.05, .1, 0, 0, 3.07, .2, .01, 0, 2.5)
+    c.trsf = Matrix3(1.01, .02, 0, 0, .99, 0, .003, 0, 1.02)
+    c.refHSize = Matrix3(40, 0, 0, 0, 3, 0, 0, 0, 2.4)
+    c.prevHSize = Matrix3(40.01, .09, 0, 0, 3.06, .2, .01, 0, 2.49)
+    c.prevVelGrad = Matrix3(.1, 0, .03, 0, -.2, 0, 0, 0, .1)
+    c.velGrad = Matrix3(.2, 0, .05, 0, -.1, 0, .01, 0, .3)  # (nextVelGrad; velGradChanged)
+    c.homoDeform, c.flipFlippable = 1, True
+    slots.append(('O.cell', lambda: O.cell))
     return f, slots
 
 

@@ -221,6 +221,10 @@ void InsertionSortCollider::action() {
         periodicAction();
         return;
     }
+    if (lastHSize.allFinite()) { // periodic until now: the lists are rebuilt
+        lastHSize = Matrix3r::Constant(NaN);
+        lastBodyChanges = -1;
+    }
     if (!needsRun(sweep)) return;
     ++numAction;
     updateBounds();

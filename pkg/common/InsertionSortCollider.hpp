@@ -25,6 +25,7 @@ public:
         v.attr("savedIds", savedIds, "Body ids ×2 (+1 for lower bounds) of savedCoords", Attr::hidden);
         v.attr("lastBodyChanges", lastBodyChanges, "Value of the body container's change counter at the last rebuild", Attr::hidden);
         v.attr("sweep", sweep, "Current enlargement of the bounds", Attr::hidden);
+        v.attr("lastHSize", lastHSize, "O.cell.hSize at the last run in a periodic scene (NaN: the last run was not periodic)", Attr::hidden);
     }
     void action() override;
     void preSave() override;
@@ -84,7 +85,7 @@ private:
     // The periodic scene (3.6.2, InsertionSortColliderPeriodic.cpp): every run finds the overlapping
     // bounds in the cell's own coordinates (fractions of its edges), each pair with the shift of body
     // 2's image (cellDist).
-    Matrix3r lastHSize = Matrix3r::Constant(NaN); // the cell at the last periodic run
+    Matrix3r lastHSize = Matrix3r::Constant(NaN); // the cell at the last periodic run (NaN: none, or aperiodic since)
     Real cellDrift() const;                       // how far any image may have moved with the cell since then
     void periodicAction();
     struct PeriodicBox {

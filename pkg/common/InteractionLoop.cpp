@@ -393,7 +393,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     const bool fuse = fuseNow;
     // a periodic scene: each pair's body 2 is the image of its cellDist (Contact::shifted)
     const Vector3i* cellDist = intrs.periodic ? intrs.cellDist.data() : nullptr;
-    const Matrix3r hSize = scene->cell->hSize, velGrad = scene->cell->velGrad;
+    const Matrix3r hSize = scene->cell->hSize, prevHSize = scene->cell->prevHSize, prevVelGrad = scene->cell->prevVelGrad;
     const int* shapeIndex = shapeCache.shapeIndex.data();
     const Shape* const* shapes = shapeCache.shape.data();
     Body::id_t* ids = intrs.pairIds.data();
@@ -476,7 +476,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         if (cellDist) {
             contacts[n].shifted = true;
             contacts[n].shift2 = hSize * cellDist[k].cast<Real>();
-            contacts[n].shiftVel2 = velGrad * contacts[n].shift2;
+            contacts[n].shiftVel2 = prevVelGrad * (prevHSize * cellDist[k].cast<Real>());
         }
         if (!fused) { // (may get a new geometry)
             contacts[n].made = made + n;

@@ -186,6 +186,7 @@ struct IntegratorStep {
     // term (2, 3) is added.
     bool homo, convective;
     Matrix3r dVelGrad, prevVelGrad;
+    Vector3r dSpin; // the change of the field's spin (the axial vector of velGrad's skew part)
 };
 
 // A body's energy terms in a step, or their sums over bodies (kin: all the kinetic energy, or its
@@ -289,6 +290,7 @@ static inline void homogeneousField(const IntegratorStep& st, const Vector3r& po
     vel = st.convective ? Vector3r(vel + st.dt * (accel + st.prevVelGrad * vel)) : Vector3r(vel + st.dt * accel);
     vel += st.dVelGrad * pos;
 }
+static inline void homogeneousSpin(const IntegratorStep& st, Vector3r& angVel) { angVel += st.dSpin; }
 
 // A dynamic body's new velocity and spin (and an aspherical body's orientation) with its energy terms;
 // Homo (a periodic cell's homogeneous field): the damping reads the fluctuation of the velocity about
@@ -340,7 +342,10 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     BodyEnergy e; // (added once the new state is known finite)
     AsphericalUpdate a;
     if (dynamic) {
-        if (__builtin_expect(st.homo, 0)) accelerate<true>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
+        if (__builtin_expect(st.homo, 0)) {
+            accelerate<true>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
+            homogeneousSpin(st, angVel);
+        }
         else accelerate<false>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
     }
     const Vector3r pos = statePos + vel * st.dt;
@@ -567,6 +572,8 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write
     st.convective = cell.homoDeform >= Cell::homoVel2nd;
     st.dVelGrad = cell.velGrad - cell.prevVelGrad;
     st.prevVelGrad = cell.prevVelGrad;
+    const Matrix3r dW = st.dVelGrad - st.dVelGrad.transpose(); // (twice the change of the spin tensor)
+    st.dSpin = 0.5 * Vector3r(dW(2, 1), dW(0, 2), dW(1, 0));
     return st;
 }
 

@@ -16,9 +16,9 @@ void bindCell(py::module_&) {
                         c.setHSize(m);
                         noteExternalWrite();
                     },
-                    "Base vectors of the cell, in columns (H of 3.6); assigning it sets refHSize too (trsf and velGrad are kept). A degenerate or inverted cell is refused")
+                    "Base vectors of the cell, in columns (H of 3.6); assigning it sets refHSize too (trsf and velGrad are kept). A degenerate or inverted cell is refused (default: Matrix3(1,0,0, 0,1,0, 0,0,1))")
             .def_property("velGrad", [](const Cell& c) { return c.velGrad; }, [](Cell& c, const Matrix3r& m) { c.setVelGrad(m); },
-                    "Velocity gradient ∇v of the homogeneous field (3.6.1); an assigned value takes effect at the next step (nextVelGrad until then)")
+                    "Velocity gradient ∇v of the homogeneous field (3.6.1); an assigned value takes effect at the next step (nextVelGrad until then) (default: Matrix3(0,0,0, 0,0,0, 0,0,0))")
             .def_property_readonly("size", &Cell::size, "Lengths of the cell's edges (column norms of hSize)")
             .def_property("refSize", [](const Cell& c) { return c.size(); },
                     [](Cell& c, const Vector3r& s) {

@@ -23,16 +23,9 @@ __all__ = ['SpherePack', 'SpherePackIterator', 'SpherePack_toSimulation', 'regul
 
 
 def _periodicCell(sp):
-    """Make the scene periodic with the packing's cell, as Yade does; not possible in this engine yet."""
-    try:
-        O.periodic = True
-        O.cell.setBox(sp.cellSize)
-    except (ValueError, AttributeError) as e:
-        if O.periodic:
-            O.periodic = False
-        raise NotImplementedError(
-            'SpherePack.toSimulation: this packing is periodic (cellSize=%s), but this engine has no periodic cell yet; '
-            'set sp.cellSize=(0,0,0) to add the spheres without a periodic cell' % (tuple(sp.cellSize),)) from e
+    """Make the scene periodic with the packing's cell, as Yade does."""
+    O.periodic = True
+    O.cell.setBox(sp.cellSize)
 
 
 def SpherePack_toSimulation(self, rot=None, **kw):
