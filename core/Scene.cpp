@@ -75,6 +75,26 @@ void Scene::setPeriodic(bool periodic) {
     interactions.setPeriodic(periodic); // (the pairs' cellDist: kept only in a periodic scene)
 }
 
+Matrix3r Scene::flipCell(Matrix3r flip) {
+    if (!isPeriodic) throw std::invalid_argument("flipCell: the scene is not periodic (O.periodic=False)");
+    Cell& c = *cell;
+    if (flip == Matrix3r::Zero()) // each edge j less the whole multiples of the others its projections hold
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i)
+                if (i != j) flip(i, j) = -std::round(c.hSize.col(i).dot(c.hSize.col(j)) / c.hSize.col(i).squaredNorm());
+    const Matrix3r m = Matrix3r::Identity() + flip;
+    if (!(m.array() == m.array().round()).all() || std::abs(m.determinant() - 1) > 1e-9)
+        throw std::invalid_argument("flipCell: I + flip must be an integer matrix of determinant 1 (a cell of the same lattice)");
+    if (flip == Matrix3r::Zero()) return flip;
+    c.hSize = c.hSize * m;
+    c.prevHSize = c.prevHSize * m;
+    // images at hSize·c = hSize'·c' with hSize' = hSize·m: c' = m⁻¹·c (integer: m is unimodular)
+    const Matrix3r inv = m.inverse();
+    for (Vector3i& d : interactions.cellDist) d = (inv * d.cast<Real>()).array().round().cast<int>().matrix();
+    ++bodies.changes; // (the collider starts afresh)
+    return flip;
+}
+
 void Scene::setDt(Real value) {
     // (0 is accepted, as in the reference: steps that advance nothing, e.g. to create contacts in place)
     if (!std::isfinite(value) || value < 0)

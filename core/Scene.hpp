@@ -32,6 +32,11 @@ public:
     // O.periodic: periodic from the next step on (the pairs there are get cellDist zero; the collider
     // sees the change and starts afresh).
     void setPeriodic(bool periodic);
+    // Cell flipping (3.6.2, utils.flipCell): the same periodic space with the cell's edges hSize·(I + flip),
+    // flip integer with I + flip unimodular (zero: the flip that makes the edges least skewed); the pairs'
+    // cellDist follow, so that every image stays where it is. Returns the flip applied; throws
+    // std::invalid_argument for a flip that is not integer or does not keep the volume.
+    Matrix3r flipCell(Matrix3r flip);
     bool trackEnergy = false;
     // O.timingEnabled: engines accumulate execTime/execCount (one clock read per engine run).
     static bool timingEnabled;

@@ -218,6 +218,7 @@ void InsertionSortCollider::action() {
                 if (e.id < 0 || !scene->bodies.exists(e.id) || !collidable(scene->bodies[e.id])) lastBodyChanges = -1;
     }
     if (scene->isPeriodic) {
+        if (scene->cell->flipFlippable) scene->flipCell(Matrix3r::Zero()); // (nothing when no flip helps)
         periodicAction();
         return;
     }

@@ -141,8 +141,19 @@ BodyArrays bodyArrays() {
     return r;
 }
 
+// A periodic scene's cellDist of contacts (entries k of the container), as an n×3 int array (a copy).
+static py::array_t<int> cellDists(const InteractionContainer& intrs, const std::vector<size_t>& entries) {
+    py::array_t<int> a({(py::ssize_t)entries.size(), (py::ssize_t)3});
+    auto m = a.mutable_unchecked<2>();
+    for (size_t i = 0; i < entries.size(); ++i)
+        for (int c = 0; c < 3; ++c) m(i, c) = intrs.cellDist[entries[i]][c];
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
 // The real contacts whose geometry is a ScGeom and physics a NormShearPhys (the others are left
-// out), as a ContactArrays (a dict) of read-only arrays. When they are all of one kind (one
+// out), as a ContactArrays (a dict) of read-only arrays (and, in a periodic scene, cellDist: a
+// copy taken now). When they are all of one kind (one
 // ContactPool), views of the pool's records (row stride = the record's size); else copies.
 py::object interactionArrays(const py::object& contactArraysClass) {
     Scene& s = omega().scene();
@@ -173,11 +184,19 @@ py::object interactionArrays(const py::object& contactArraysClass) {
         d["normal"] = set->make(real, g0->normal.data(), n, 3, stride, sizeof(Real), false, set);
         d["contactPoint"] = set->make(real, g0->contactPoint.data(), n, 3, stride, sizeof(Real), false, set);
         d["penetrationDepth"] = set->make(real, &g0->penetrationDepth, n, 0, stride, 0, false, set);
+        d["refR1"] = set->make(real, &g0->refR1, n, 0, stride, 0, false, set);
+        d["refR2"] = set->make(real, &g0->refR2, n, 0, stride, 0, false, set);
+        if (intrs.periodic) {
+            std::vector<size_t> entries(n);
+            for (size_t i = 0; i < n; ++i) entries[i] = only->header(i).k;
+            d["cellDist"] = cellDists(intrs, entries);
+        }
         return d;
     }
     std::vector<int> id1, id2;
     std::vector<Vector3r> fn, fs, normal, point;
-    std::vector<Real> depth;
+    std::vector<Real> depth, refR1, refR2;
+    std::vector<size_t> entries;
     for (size_t k = 0; k < intrs.size(); ++k) {
         if (!intrs.isReal(k)) continue;
         const auto* g = dynamic_cast<const ScGeom*>(intrs.geom(k));
@@ -190,6 +209,9 @@ py::object interactionArrays(const py::object& contactArraysClass) {
         normal.push_back(g->normal);
         point.push_back(g->contactPoint);
         depth.push_back(g->penetrationDepth);
+        refR1.push_back(g->refR1);
+        refR2.push_back(g->refR2);
+        entries.push_back(k);
     }
     auto vectors = [](const std::vector<Vector3r>& v) {
         py::array_t<Real> a({(py::ssize_t)v.size(), (py::ssize_t)3});
@@ -205,6 +227,9 @@ py::object interactionArrays(const py::object& contactArraysClass) {
     d["normal"] = vectors(normal);
     d["contactPoint"] = vectors(point);
     d["penetrationDepth"] = py::array_t<Real>((py::ssize_t)depth.size(), depth.data());
+    d["refR1"] = py::array_t<Real>((py::ssize_t)refR1.size(), refR1.data());
+    d["refR2"] = py::array_t<Real>((py::ssize_t)refR2.size(), refR2.data());
+    if (intrs.periodic) d["cellDist"] = cellDists(intrs, entries);
     for (const auto& item : py::reinterpret_borrow<py::dict>(d)) // (read-only as the views, though nobody reads them after)
         py::detail::array_proxy(item.second.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return d;
@@ -265,7 +290,7 @@ views then show other contacts in their rows, or none; take new arrays."""
     py::setattr(interactionsClass, "arrays",
             py::cpp_function([contactArraysClass](py::object) { return interactionArrays(contactArraysClass); }, py::is_method(interactionsClass), py::name("arrays"),
                     "The real contacts (ScGeom + NormShearPhys) as a ContactArrays (a dict) of read-only NumPy arrays: id1, id2, normalForce, "
-                    "shearForce, normal, contactPoint, penetrationDepth (row i is one contact; forces are those on body 2). When all real "
+                    "shearForce, normal, contactPoint, penetrationDepth, refR1, refR2, and in a periodic scene cellDist (row i is one contact; forces are those on body 2). When all real "
                     "contacts are of one kind (one IGeom and one IPhys class: the usual case), these are views of the engine's contact "
                     "records, not copies: they show the current values until the set of contacts changes (a contact made or ended, "
                     "usually at the next step; an erase; O.reset()): then the dict's `stale` is True, and rows may show other contacts "

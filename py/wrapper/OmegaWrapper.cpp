@@ -747,6 +747,7 @@ void bindOmega(py::module_& m) {
                         scene().setPeriodic(v);
                         noteExternalWrite();
                     }, "Whether space is periodic, repeating the cell O.cell (3.6)")
+            .def("_flipCell", [](OmegaProxy&, const Matrix3r& flip) { return scene().flipCell(flip); }, py::arg("flip"), "utils.flipCell")
             .def_property_readonly("cell", [](OmegaProxy&) -> py::object {
                 if (!scene().isPeriodic) return py::none();
                 return py::cast(scene().cell);

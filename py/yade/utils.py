@@ -226,12 +226,41 @@ def avgNumInteractions(cutoff=0.0, skipFree=False, considerClumps=False):
 
 
 def porosity(volume=-1):
-    """Volume of voids over the total volume; volume<=0: the box around all spheres (aabbExtrema)."""
-    if volume <= 0:
+    """Volume of voids over the total volume; volume<=0: the box around all spheres (aabbExtrema). In a
+    periodic scene the volume is the cell's, whatever is given (as in the reference)."""
+    if O.periodic:
+        volume = O.cell.volume
+    elif volume <= 0:
         lo, hi = aabbExtrema()
         d = hi - lo
         volume = d[0] * d[1] * d[2]
     return (volume - getSpheresVolume()) / volume
+
+def voxelPorosity(resolution=200, start=Vector3.Zero, end=Vector3.Zero):
+    """Porosity of the box [start, end] counted on a grid of resolution³ voxels: the fraction of voxel
+    centers inside no sphere (the other shapes are ignored)."""
+    np = _np()
+    lo, hi = np.asarray(tuple(start), dtype=float), np.asarray(tuple(end), dtype=float)
+    if (lo == hi).all():
+        raise ValueError('utils.voxelPorosity: cannot calculate porosity when start==end of the volume box.')
+    if not (hi > lo).all() or int(resolution) < 1:
+        raise ValueError('utils.voxelPorosity: end must be above start on every axis, and resolution at least 1')
+    res = int(resolution)
+    step = (hi - lo) / res
+    full = np.zeros((res, res, res), dtype=bool)
+    a = O.bodies.arrays()
+    r = np.asarray(a.radius)
+    pos = np.asarray(a.pos)
+    axes = [lo[k] + (np.arange(res) + 0.5) * step[k] for k in range(3)]
+    for c, rad in zip(pos[np.isfinite(r)], r[np.isfinite(r)]):  # (per sphere: the voxels of its box only)
+        i0 = np.maximum(np.floor((c - rad - lo) / step - 0.5).astype(int), 0)
+        i1 = np.minimum(np.ceil((c + rad - lo) / step - 0.5).astype(int) + 1, res)
+        if (i1 <= i0).any():
+            continue
+        x, y, z = (axes[k][i0[k]:i1[k]] - c[k] for k in range(3))
+        full[i0[0]:i1[0], i0[1]:i1[1], i0[2]:i1[2]] |= (x[:, None, None] ** 2 + y[None, :, None] ** 2 + z[None, None, :] ** 2) <= rad * rad
+    return 1.0 - int(full.sum()) / full.size
+
 
 def aabbDim(cutoff=0.0, centers=False):
     """Size (max - min) of aabbExtrema(cutoff, centers)."""
@@ -321,21 +350,32 @@ def forcesOnCoordPlane(coord, axis):
 
 def _loveSums():
     """Per contact: the force on the second body f (normal + shear) and the branch vector
-    l = x2 - x1 between the bodies' positions."""
+    l = x2 - x1 between the bodies' positions (in a periodic scene, to body 2's image: + hSize·cellDist)."""
     np = _np()
     c = _contacts()
     pos = _bodyPos()
     f = np.asarray(c['normalForce']) + np.asarray(c['shearForce'])
-    l = pos[c['id2']] - pos[c['id1']]
+    l = pos[c['id2']] - pos[c['id1']] + _periodicBranches(c)
     return c, f, l
+
+
+def _periodicBranches(c):
+    """A periodic scene's shifts hSize·cellDist of body 2's images, per contact of c (zero otherwise)."""
+    np = _np()
+    if not O.periodic or len(c['id1']) == 0:
+        return np.zeros((len(c['id1']), 3))
+    return np.asarray(c['cellDist'], dtype=float).dot(np.asarray(O.cell.hSize, dtype=float).T)
 
 
 def getStress(volume=0):
     """Average stress in the volume (Love-Weber): σ = -1/V Σ_c f ⊗ l over the real contacts (f: the
     contact force on the second body, l: the branch vector from the first body's position to the
-    second's), tension positive; volume 0: the box around all spheres (aabbDim)."""
+    second's, or to its image in a periodic cell), tension positive; volume 0: the periodic cell's, or
+    the box around all spheres (aabbDim)."""
     np = _np()
-    if volume == 0:
+    if volume == 0 and O.periodic:
+        volume = O.cell.volume
+    elif volume == 0:
         d = aabbDim()
         volume = d[0] * d[1] * d[2]
     if not volume > 0:
@@ -355,8 +395,9 @@ def bodyStressTensors():
     out = np.zeros((n, 3, 3))
     f = np.asarray(c['normalForce']) + np.asarray(c['shearForce'])
     cp = np.asarray(c['contactPoint'])
-    for ids, sign in ((c['id1'], -1.0), (c['id2'], 1.0)):
-        np.add.at(out, ids, np.einsum('ci,cj->cij', sign * f, cp - pos[ids]))
+    shift = _periodicBranches(c)  # (body 2 touches through its image)
+    for ids, sign, at in ((c['id1'], -1.0, pos[c['id1']]), (c['id2'], 1.0, pos[c['id2']] + shift)):
+        np.add.at(out, ids, np.einsum('ci,cj->cij', sign * f, cp - at))
     r = np.nan_to_num(np.asarray(O.bodies.arrays().radius), nan=0.0)
     vol = 4. / 3. * math.pi * r ** 3
     with np.errstate(divide='ignore', invalid='ignore'):
@@ -365,9 +406,42 @@ def bodyStressTensors():
 
 
 def normalShearStressTensors(compressionPositive=False, splitNormalTensor=False, thresholdForce=float('nan')):
-    """The normal and shear parts of the stress of a periodic cell; this engine has no periodic
-    cell, so it raises RuntimeError as the reference does in an aperiodic simulation."""
-    raise RuntimeError("Can't compute stress of periodic cell in aperiodic simulation.")
+    """The stress of the periodic cell in two parts (Thornton 2000, eq. 3), over the real contacts:
+    normal σN = s/V Σ_c R N n ⊗ n and shear σT = s/V Σ_c R n ⊗ T, with R = refR1 + refR2, n the
+    normal, N = f_n·n the normal force's magnitude (positive in compression), T the shear force and V
+    the cell's volume; σT is made symmetric from its upper triangle. s = 1, or -1 with
+    compressionPositive (the reference's signs, which this follows: compression comes out positive
+    with the default). splitNormalTensor: (σN of the strong contacts, σN of the weak ones), strong
+    those whose N exceeds thresholdForce (NaN: the mean N). RuntimeError in an aperiodic scene."""
+    if not O.periodic:
+        raise RuntimeError("Can't compute stress of periodic cell in aperiodic simulation.")
+    np = _np()
+    c = _contacts()
+    n = np.asarray(c['normal']).reshape(-1, 3)
+    N = np.einsum('ci,ci->c', np.asarray(c['normalForce']).reshape(-1, 3), n)
+    R = _refRadiiSums(c)
+    s = (-1.0 if compressionPositive else 1.0) / O.cell.volume
+    normal = lambda sel: _matrix(s * np.einsum('c,ci,cj->ij', (R * N)[sel], n[sel], n[sel]))
+    if splitNormalTensor:
+        t = N.mean() if math.isnan(thresholdForce) else thresholdForce
+        return (normal(N > t), normal(~(N > t)))
+    shear = s * np.einsum('c,ci,cj->ij', R, n, np.asarray(c['shearForce']).reshape(-1, 3))
+    shear = np.triu(shear) + np.triu(shear, 1).T
+    return (normal(slice(None)), _matrix(shear))
+
+
+def _refRadiiSums(c):
+    """refR1 + refR2 of each contact of c (its geometry's)."""
+    np = _np()
+    return np.asarray(c['refR1']) + np.asarray(c['refR2'])
+
+
+def stressTensorOfPeriodicCell(smallStrains=False):
+    """The Love-Weber stress of the periodic cell (getStress with the cell's volume); RuntimeError in an
+    aperiodic scene."""
+    if not O.periodic:
+        raise RuntimeError("Can't compute stress of periodic cell in aperiodic simulation.")
+    return getStress()
 
 
 def fabricTensor(cutoff=0.0, splitTensor=False, thresholdForce=float('nan'), extrema=[]):
@@ -748,16 +822,28 @@ def getSpheresVolume2D(mask=-1):
     return sum((math.pi * b.shape.radius ** 2 for b in O.bodies if isinstance(b.shape, Sphere) and (mask == -1 or (b.mask & mask))), 0.0)
 
 
+def flipCell(flip=Matrix3.Zero):
+    """Flip the periodic cell (3.6.2): the same periodic space with edges hSize·(I + flip), the
+    interactions' cellDist adjusted so that nothing moves. flip: integers, I + flip of determinant 1;
+    zero: the flip that makes the edges least skewed (each less the whole multiples of the others it
+    holds). Returns the flip applied."""
+    return O._flipCell(flip)
+
+
 def getTotalDynamicStress(volume=0):
-    """The dynamic (kinetic) stress sum over bodies of m·v⊗v divided by `volume` (required here: there is no
-    periodic cell)."""
-    if not volume > 0:
+    """The dynamic (kinetic) stress Σ_b m v ⊗ v / V over the bodies. In a periodic scene, v is the
+    fluctuation about the homogeneous field, v - velGrad·x, and V the cell's volume; otherwise `volume`
+    is required."""
+    np = _np()
+    a = O.bodies.arrays()
+    live = np.asarray(a.exists, dtype=bool)  # (not the holes of erased bodies)
+    v, m = np.asarray(a.vel)[live], np.asarray(a.mass)[live]
+    if O.periodic:
+        v = v - np.asarray(a.pos)[live].dot(np.asarray(O.cell.velGrad, dtype=float).T)
+        volume = O.cell.volume
+    elif not volume > 0:
         raise ValueError('getTotalDynamicStress: Must provide volume if scene is not periodic!')
-    total = Matrix3.Zero
-    for b in O.bodies:
-        mv, v = b.state.mass * b.state.vel, b.state.vel
-        total = total + Matrix3(*[mv[i] * v[j] for i in range(3) for j in range(3)])
-    return total / volume
+    return _matrix(np.einsum('b,bi,bj->ij', m, v, v) / volume)
 
 
 _VARS_TAG = 'pickledPythonVariablesDictionary'
@@ -788,7 +874,8 @@ def loadVars(mark=None):
 
 __all__ += ['SpherePWaveTimeStep', 'RayleighWaveTimeStep', 'growParticles', 'growParticle', 'setContactFriction',
             'sumFacetNormalForces', 'negPosExtremeIds', 'cart2spher', 'spher2cart', 'fractionalBox', 'scalarOnColorScale',
-            'randomOrientation', 'saveVars', 'loadVars', 'perpendicularArea', 'getSpheresVolume2D', 'getTotalDynamicStress']
+            'randomOrientation', 'saveVars', 'loadVars', 'perpendicularArea', 'getSpheresVolume2D', 'getTotalDynamicStress',
+            'stressTensorOfPeriodicCell', 'voxelPorosity', 'flipCell']
 
 from .params import readParamsFromTable, waitIfBatch  # noqa: E402
 __all__ += ['readParamsFromTable', 'waitIfBatch']
