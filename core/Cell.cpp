@@ -77,10 +77,12 @@ void Cell::integrate(Real dt) {
     trsf += inc * trsf;
     hSize += inc * hSize;
     prevVelGrad = velGrad;
-    if (velGradChanged) {
-        velGrad = nextVelGrad;
-        velGradChanged = false;
-    }
+}
+
+void Cell::takeNextVelGrad() {
+    if (!velGradChanged) return;
+    velGrad = nextVelGrad;
+    velGradChanged = false;
 }
 
 std::pair<Matrix3r, Matrix3r> Cell::polarDecomposition() const {

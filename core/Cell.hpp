@@ -79,8 +79,11 @@ public:
     Vector3r shiftVel(const Vector3r& shift2) const { return velGrad * shift2; }
 
     // The start of a step (Scene::beginStep): the cell deformed by the velocity gradient of the
-    // last step, (3.6.1); then the gradient assigned since becomes the current one.
+    // last step, (3.6.1), which becomes prevVelGrad.
     void integrate(Real dt);
+    // The integrator's step (NewtonIntegrator): a velocity gradient assigned since becomes the current
+    // one (so a scene without an integrator keeps its cell as it is, as in the reference).
+    void takeNextVelGrad();
 
     // Strain measures of trsf (F).
     Matrix3r smallStrain() const { return Real(0.5) * (trsf + trsf.transpose()) - Matrix3r::Identity(); }

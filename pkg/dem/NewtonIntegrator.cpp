@@ -184,7 +184,7 @@ struct IntegratorStep {
     // A periodic cell whose homogeneous field the bodies follow (Cell.homoDeform 1, 2 or 3): the
     // change of velGrad since the last step, the last step's velGrad, and whether the convective
     // term (2, 3) is added.
-    bool homo, convective;
+    bool periodic, homo, convective;
     Matrix3r dVelGrad, prevVelGrad;
     Vector3r dSpin; // the change of the field's spin (the axial vector of velGrad's skew part)
 };
@@ -293,12 +293,12 @@ static inline void homogeneousField(const IntegratorStep& st, const Vector3r& po
 static inline void homogeneousSpin(const IntegratorStep& st, Vector3r& angVel) { angVel += st.dSpin; }
 
 // A dynamic body's new velocity and spin (and an aspherical body's orientation) with its energy terms;
-// Homo (a periodic cell's homogeneous field): the damping reads the fluctuation of the velocity about
-// the field, and the field's convective acceleration is added (homogeneousField).
-template <bool Homo>
+// Periodic: the damping reads the fluctuation of the velocity about the cell's homogeneous field, and
+// bodies follow the field where Cell.homoDeform says so (homogeneousField).
+template <bool Periodic>
 static inline void accelerate(const IntegratorStep& st, long id, int blocked, Real mass, const Vector3r& inertia, Vector3r& vel, Vector3r& angVel,
         BodyEnergy& e, AsphericalUpdate& a, const Vector3r& pos) {
-    const Vector3r fluct = Homo ? Vector3r(vel - st.prevVelGrad * pos) : vel;
+    const Vector3r fluct = Periodic ? Vector3r(vel - st.prevVelGrad * pos) : vel;
     const bool damped = st.lambda != 0 && st.h.isDamped[id];
     const Vector3r gFree = freeGravity(st.g, blocked);
     Vector3r undamped;
@@ -310,7 +310,7 @@ static inline void accelerate(const IntegratorStep& st, long id, int blocked, Re
         rotateAspherical(st, id, mass, inertia, damped, gFree, vel, accel, undamped, angVel, e, a);
     else
         rotateSphere(st, id, mass, inertia, blocked, damped, still, gFree, vel, accel, undamped, angVel, e);
-    if constexpr (Homo) homogeneousField(st, pos, accel, vel);
+    if (Periodic && st.homo) homogeneousField(st, pos, accel, vel);
     else vel += st.dt * accel;
 }
 
@@ -342,9 +342,9 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     BodyEnergy e; // (added once the new state is known finite)
     AsphericalUpdate a;
     if (dynamic) {
-        if (__builtin_expect(st.homo, 0)) {
+        if (__builtin_expect(st.periodic, 0)) {
             accelerate<true>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
-            homogeneousSpin(st, angVel);
+            if (st.homo) homogeneousSpin(st, angVel);
         }
         else accelerate<false>(st, id, blocked, h.mass[id], h.inertia[id], vel, angVel, e, a, statePos);
     }
@@ -437,7 +437,7 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
     bool any = sums.any;
     Real maxV2 = x.maxV2, maxMoved2 = x.maxMoved2;
     long diverged = x.diverged;
-    const bool lean = !st.energy && st.moveMask == -1 && !st.homo;
+    const bool lean = !st.energy && st.moveMask == -1 && !st.periodic;
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
         const long b1 = std::min(hi, b0 + chunkBodies);
         if (lean) { // (free spheres: their own step, two at a time)
@@ -567,7 +567,9 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write
     st.T = s.forces.torqueData();
     st.spins = spinning.data();
     st.reference = motion.reference;
-    const Cell& cell = *s.cell;
+    Cell& cell = *s.cell;
+    if (s.isPeriodic) cell.takeNextVelGrad();
+    st.periodic = s.isPeriodic;
     st.homo = s.isPeriodic && cell.homoDeform >= Cell::homoVel;
     st.convective = cell.homoDeform >= Cell::homoVel2nd;
     st.dVelGrad = cell.velGrad - cell.prevVelGrad;

@@ -49,14 +49,15 @@ void bindCell(py::module_&) {
             .def("getEulerianAlmansiStrain", &Cell::eulerianAlmansiStrain, "Euler-Almansi strain ½(I - (FFᵀ)⁻¹)")
             .def("getPolarDecOfDefGrad", [](const Cell& c) {
                 const auto ru = c.polarDecomposition();
-                return py::make_tuple(ru.first, Matrix3r(ru.first * ru.second * ru.first.transpose()));
-            }, "Polar decomposition of F: (R, V), the rotation and the left stretch (F = V·R)")
+                return py::make_tuple(ru.first, ru.second);
+            }, "Polar decomposition of F = R·U: (R, U), the rotation and the stretch U = (FᵀF)^½")
             .def("getRotation", [](const Cell& c) { return c.polarDecomposition().first; }, "Rotation R of the polar decomposition of F")
-            .def("getRightStretch", [](const Cell& c) { return c.polarDecomposition().second; }, "Right stretch U of F = R·U")
-            .def("getLeftStretch", [](const Cell& c) {
+            // (the reference's names, followed here: 'right' the stretch applied after the rotation)
+            .def("getRightStretch", [](const Cell& c) {
                 const auto ru = c.polarDecomposition();
                 return Matrix3r(ru.first * ru.second * ru.first.transpose());
-            }, "Left stretch V of F = V·R")
+            }, "The stretch V of F = V·R, (FFᵀ)^½ (named as in the reference)")
+            .def("getLeftStretch", [](const Cell& c) { return c.polarDecomposition().second; }, "The stretch U of F = R·U, (FᵀF)^½ (named as in the reference)")
             .def("getSpin", [axial](const Cell& c) { return axial(c.spin()); }, "Axial vector of the spin ½(∇v - ∇vᵀ)");
 }
 

@@ -7,3 +7,4 @@ for s in bouncing_sphere oblique_impact; do
 done
 # the FrictVisco law's scenes (tests/test_frictvisco.py): one JSON line
 yade -n -x -j1 frictvisco.py 2>/dev/null | grep '^FRICTVISCO ' | sed 's/^FRICTVISCO //' > data/frictvisco.json
+yade -n -x -j1 periodic.py 2>/dev/null | grep '^PERIODIC ' | sed 's/^PERIODIC //' > data/periodic.json
