@@ -98,11 +98,11 @@ void InsertionSortCollider::periodicAction() {
     if (!needsRun(sweep - 0.5 * cellDrift())) return;
     ++numAction;
     updateBounds();
-    lastBodyChanges = scene->bodies.changes;
-    lastHSize = scene->cell->hSize;
     for (auto& axis : axes) axis.clear(); // (the aperiodic lists: rebuilt if the scene stops being periodic)
     std::vector<std::pair<std::pair<Body::id_t, Body::id_t>, Vector3i>> found;
-    periodicPairs(periodicBoxes(), found);
+    periodicPairs(periodicBoxes(), found); // (throws for a body too big: then the next step tries again)
+    lastBodyChanges = scene->bodies.changes;
+    lastHSize = scene->cell->hSize;
     InteractionContainer& intrs = scene->interactions;
     std::vector<char> seen(intrs.size(), 0);
     std::vector<std::pair<Body::id_t, Body::id_t>> added;

@@ -307,9 +307,9 @@ static inline void accelerate(const IntegratorStep& st, long id, int blocked, Re
     if (__builtin_expect(asphericalBody, 0)) spinFromMomentum(st, id, inertia, angVel, a);
     const bool still = (angVel.array() == 0).all() && (st.T[id].array() == 0).all() && (inertia.array() > 0).all();
     if (asphericalBody && !still)
-        rotateAspherical(st, id, mass, inertia, damped, gFree, vel, accel, undamped, angVel, e, a);
+        rotateAspherical(st, id, mass, inertia, damped, gFree, fluct, accel, undamped, angVel, e, a);
     else
-        rotateSphere(st, id, mass, inertia, blocked, damped, still, gFree, vel, accel, undamped, angVel, e);
+        rotateSphere(st, id, mass, inertia, blocked, damped, still, gFree, fluct, accel, undamped, angVel, e);
     if (Periodic && st.homo) homogeneousField(st, pos, accel, vel);
     else vel += st.dt * accel;
 }
