@@ -117,7 +117,13 @@ void InsertionSortCollider::periodicAction() {
         }
         seen[k] = 1;
         // a potential pair takes the shift of the overlap now; a contact keeps the image it touches
-        if (!intrs.isReal((size_t)k)) intrs.cellDist[k] = intrs.pairIds[2 * k] == a ? f.second : Vector3i(-f.second);
+        if (!intrs.isReal((size_t)k)) {
+            const Vector3i c = intrs.pairIds[2 * k] == a ? f.second : Vector3i(-f.second);
+            if (c != intrs.cellDist[k]) { // (another image: what the interaction loop kept of the pair is stale)
+                intrs.cellDist[k] = c;
+                ++intrs.changes;
+            }
+        }
     }
     std::vector<std::pair<Body::id_t, Body::id_t>> stale;
     for (size_t k = 0; k < seen.size(); ++k)

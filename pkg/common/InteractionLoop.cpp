@@ -390,7 +390,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     float* gaps = skin.active ? skin.gap[list].data() : nullptr;
     unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
-    const bool fuse = fuseNow;
+    const bool fuse = fusedPasses;
     // a periodic scene: each pair's body 2 is the image of its cellDist (Contact::shifted)
     const Vector3i* cellDist = intrs.periodic ? intrs.cellDist.data() : nullptr;
     const Matrix3r hSize = scene->cell->hSize, prevHSize = scene->cell->prevHSize, prevVelGrad = scene->cell->prevVelGrad;
@@ -443,7 +443,8 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         }
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
-        apart[j - j0] = quick && !wasReal[k] && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD);
+        const bool shifted = cellDist && cellDist[k] != Vector3i::Zero(); // (body 2's image elsewhere: a periodic scene)
+        apart[j - j0] = quick && !wasReal[k] && !shifted && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD);
         if (apart[j - j0]) continue;
         if (gaps) gaps[i] = -Inf; // tested again at the next step
         const int c1 = shapeIndex[ids[2 * k]], c2 = shapeIndex[ids[2 * k + 1]];
@@ -469,11 +470,11 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         prefetchObject(geom);
         prefetchObject(phys);
         // an existing contact whose Ig2 and Law2 functors have a fast pass: both run in step 4
-        IGeomFunctor* fused = fuse && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
+        IGeomFunctor* fused = fuse && !shifted && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
         entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1, (unsigned)i} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0, (unsigned)i};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
-        if (cellDist) {
+        if (shifted) {
             contacts[n].shifted = true;
             contacts[n].shift2 = hSize * cellDist[k].cast<Real>();
             contacts[n].shiftVel2 = prevVelGrad * (prevHSize * cellDist[k].cast<Real>());
@@ -758,13 +759,13 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, co
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
-    if (fuseNow && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
+    if (keepNow && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
     if (n > 0) computeGeometry(sc, n, columns);
     const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
-    if (fuseNow) keepBatch(sc, list, j0, j1, live);
+    if (keepNow) keepBatch(sc, list, j0, j1, live);
 }
 
 void InteractionLoop::action() {
@@ -905,8 +906,8 @@ void InteractionLoop::runLoop() {
         InteractionContainer& intrs;
         ~Sweep() { intrs.sweep(); }
     } sweepAfter{intrs};
-    fuseNow = fusedPasses && !s.isPeriodic;
-    const bool quick = fastPath && !s.isPeriodic && prepareQuickReject(); // (its distances know no images)
+    keepNow = fusedPasses && !s.isPeriodic;
+    const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();
         for (int t = 0; t < threads; ++t) scratch.emplace_back(new Scratch);
@@ -924,7 +925,7 @@ void InteractionLoop::runLoop() {
         }
     prepareSkin(quick);
     const KeptKey key{intrs.changes, s.serial, threadPairsBuild, lawDispatcher->tableGeneration(), externalWrites()};
-    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fuseNow) { // (every kept entry is stale)
+    if (!(key == keptKey) || functorsChanged || cacheBuilt || !keepNow) { // (every kept entry is stale)
         keptKey = key;
         ++keptGeneration;
         keptKindCount.store(0);

@@ -76,9 +76,9 @@ private:
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
     const Real* shapeRadius = nullptr;
-    // fusedPasses in this step (not in a periodic scene: the passes and the kept entries take body 2
-    // where it is, not its image)
-    bool fuseNow = true;
+    // The kept entries in this step (fusedPasses, not in a periodic scene: they do not know the pairs'
+    // images; there the fast passes and the quick rejects take only the pairs of cellDist zero)
+    bool keepNow = true;
     bool quickFromIntegrator = false; // this step's centers are the integrator's positions (the radii cached)
     bool cacheBuilt = false;      // prepareShapes() rebuilt shapeCache in this step
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid

@@ -8,3 +8,5 @@ done
 # the FrictVisco law's scenes (tests/test_frictvisco.py): one JSON line
 yade -n -x -j1 frictvisco.py 2>/dev/null | grep '^FRICTVISCO ' | sed 's/^FRICTVISCO //' > data/frictvisco.json
 yade -n -x -j1 periodic.py 2>/dev/null | grep '^PERIODIC ' | sed 's/^PERIODIC //' > data/periodic.json
+# tutorial 04's deterministic copy (tests/test_tutorials.py): the series it saves
+tmp=$(mktemp -d) && python3 tutorial04_copy.py > "$tmp/t.py" && (cd "$tmp" && yade -n -x -j1 t.py >/dev/null 2>&1) && cp "$tmp"/2*.txt data/tutorial04.txt && rm -rf "$tmp"
