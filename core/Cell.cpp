@@ -19,9 +19,10 @@ static std::string show(const Matrix3r& m) {
 // right-handed base.
 static void checkCell(const Matrix3r& h, const char* what) {
     if (!h.allFinite()) throw std::invalid_argument(std::string(what) + " must be finite, got " + show(h));
+    // (RuntimeError in Python, as the reference's)
     const Real det = h.determinant(), scale = h.colwise().norm().prod();
     if (!(det > 1e-12 * scale) || !(scale > 0))
-        throw std::invalid_argument(std::string(what) + (det < 0 && det < -1e-12 * scale ? " is inverted (negative volume, left-handed edges): " : " is degenerate (zero volume): ")
+        throw std::runtime_error(std::string(what) + (det < 0 && det < -1e-12 * scale ? " is inverted (negative volume, left-handed edges): " : " is degenerate (zero volume): ")
                 + show(h) + "; the columns are the cell's edges and must span a right-handed parallelepiped");
 }
 

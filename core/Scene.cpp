@@ -91,7 +91,8 @@ Matrix3r Scene::flipCell(Matrix3r flip) {
     // images at hSize·c = hSize'·c' with hSize' = hSize·m: c' = m⁻¹·c (integer: m is unimodular)
     const Matrix3r inv = m.inverse();
     for (Vector3i& d : interactions.cellDist) d = (inv * d.cast<Real>()).array().round().cast<int>().matrix();
-    ++bodies.changes; // (the collider starts afresh)
+    ++bodies.changes;       // (the collider starts afresh)
+    ++interactions.changes; // (and the interaction loop: the pairs' images changed)
     return flip;
 }
 

@@ -236,8 +236,8 @@ def drop_blocks(data, kind, index=None):
 
 
 def test_a_newer_format_version_is_refused_by_name(tmp_path, saved):
-    msg = refused(tmp_path, reblocked(saved, lambda k, p: b'\x03' + p[1:] if k == b'HEAD' else p))
-    assert 'format version 3 by a newer build' in msg
+    msg = refused(tmp_path, reblocked(saved, lambda k, p: b'\x04' + p[1:] if k == b'HEAD' else p))
+    assert 'format version 4 by a newer build' in msg
 
 
 # ---------------------------------------------------------------- memory

@@ -27,7 +27,7 @@ void InteractionLoop::checkFunctorChain() const {
     };
     std::string laws;
     for (const auto& law : lawDispatcher->functors) laws += (laws.empty() ? "" : ", ") + law->getClassName();
-    if (laws.empty()) laws = "none";
+    if (laws.empty()) return; // (no Law2 functor at all: contacts without forces, geometry and physics only, as the reference allows)
     for (const auto& ig2 : geomDispatcher->functors) {
         const std::string g = ig2->producedType();
         if (!accepts(g, ""))
@@ -906,7 +906,7 @@ void InteractionLoop::runLoop() {
         InteractionContainer& intrs;
         ~Sweep() { intrs.sweep(); }
     } sweepAfter{intrs};
-    keepNow = fusedPasses && !s.isPeriodic;
+    keepNow = fusedPasses;
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();

@@ -43,6 +43,11 @@ public:
     // refR2, penetrationDepth and contactPoint must be set before (Values::precompute, one contact).
     void precompute(const Kinematics& s1, const Kinematics& s2, Real dt, const Vector3r& currentNormal, bool isNew,
             const Vector3r& shift2, bool avoidRatcheting);
+    // The relative velocity of body 2 at the contact (whole, not only its shear part), body 2 being its
+    // image at pos + shift2 moving at vel + shiftVel2 in a periodic scene: with avoidRatcheting, of points
+    // at the reference radii along the normal (the translation scaled by (r1+r2)/distance), otherwise of
+    // the bodies' material points at the contact point.
+    Vector3r incidentVel(const Kinematics& s1, const Kinematics& s2, const Vector3r& shift2, const Vector3r& shiftVel2, bool avoidRatcheting) const;
     // Rotates a shear vector (force or displacement) with the contact plane: (3.3.2) step 1.
     Vector3r& rotate(Vector3r& shear) const { return shear = rotated(shear); }
     Vector3r rotated(const Vector3r& shear) const {

@@ -60,7 +60,9 @@ Real Shop::kineticEnergy(const Scene& scene, long* maxId) {
         const State& s = *b->state;
         const Matrix3r R = s.ori().toRotationMatrix();
         const Matrix3r I = R * s.inertia().asDiagonal() * R.transpose(); // inertia in the global frame
-        const Real eb = 0.5 * s.mass() * s.vel().squaredNorm() + 0.5 * s.angVel().dot(I * s.angVel());
+        // (in a periodic cell, the velocity's fluctuation about the homogeneous field velGrad·x)
+        const Vector3r v = scene.isPeriodic ? Vector3r(s.vel() - scene.cell->velGrad * s.pos()) : s.vel();
+        const Real eb = 0.5 * s.mass() * v.squaredNorm() + 0.5 * s.angVel().dot(I * s.angVel());
         e += eb;
         if (maxId && eb > largest) {
             largest = eb;

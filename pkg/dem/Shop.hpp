@@ -9,7 +9,7 @@ namespace Shop {
     // Mean (or maximum) resultant force on dynamic bodies, gravity of the NewtonIntegrator
     // included, divided by the mean contact force; tends to 0 at static equilibrium.
     Real unbalancedForce(Scene& scene, bool useMaxForce);
-    // Sum of ½mv² + ½ω·Iω over dynamic bodies.
+    // Sum of ½mv² + ½ω·Iω over dynamic bodies (v: in a periodic cell, relative to the homogeneous field).
     // maxId (if given): the id of the body with the largest kinetic energy (-1: none)
     Real kineticEnergy(const Scene& scene, long* maxId = nullptr);
     // Box around all spheres (surfaces, or centers only).

@@ -18,6 +18,7 @@
 #include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
 #include <py/wrapper/CellWrapper.hpp>
+#include <py/wrapper/ScGeomWrapper.hpp>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -46,6 +47,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindSpherePack(m);
     yade::bindHertzMindlin(m);
     yade::bindCell(m);
+    yade::bindScGeom(m);
     yade::bindFrictVisco(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.

@@ -338,7 +338,18 @@ static InteractionContainer::Ptr createInteraction(long id1, long id2, bool virt
             throw std::runtime_error("createInteraction: no Ig2 functor in the InteractionLoop for " + b1.shape->getClassName() + "+" + b2.shape->getClassName());
         const Body &f1 = geomEntry.swap ? b2 : b1, &f2 = geomEntry.swap ? b1 : b2; // (in the functor's order)
         if (geomEntry.swap) I->swapOrder();
-        if (!geomEntry.functor->go(*f1.shape, *f2.shape, *f1.state, *f2.state, Vector3r::Zero(), true, *I) || !I->geom)
+        // in a periodic scene, with the image of body 2 nearest to body 1, moving with the homogeneous
+        // field (as the interaction loop takes it)
+        State image;
+        if (s.isPeriodic) {
+            const Cell& c = *s.cell;
+            I->cellDist = (c.hSize.inverse() * (f1.state->pos() - f2.state->pos())).array().round().cast<int>().matrix();
+            image.pos() = f2.state->pos() + c.hSize * I->cellDist.cast<Real>();
+            image.vel() = f2.state->vel() + c.prevVelGrad * (c.prevHSize * I->cellDist.cast<Real>());
+            image.angVel() = f2.state->angVel();
+            image.ori() = f2.state->ori();
+        }
+        if (!geomEntry.functor->go(*f1.shape, *f2.shape, *f1.state, s.isPeriodic ? image : *f2.state, Vector3r::Zero(), true, *I) || !I->geom)
             throw std::runtime_error("createInteraction: " + geomEntry.functor->getClassName() + " made no geometry for #" + std::to_string(id1) + "+#" + std::to_string(id2));
         const auto& physEntry = loop->physDispatcher->getFunctor(*b1.material, *b2.material);
         if (!physEntry.functor)
