@@ -70,8 +70,10 @@ void PeriTriaxController::action() {
         if (!(mass > 0) || !std::isfinite(mass))
             throw std::invalid_argument("PeriTriaxController.mass must be positive and finite with dynCell=True (NaN: the bodies' total mass), got " + std::to_string(mass));
     }
-    // (with dynCell the stress and strain are taken afresh every step, the unbalanced force still every globUpdate)
-    const bool update = s.iter % globUpdate == 0, measure = update || dynCell;
+    // Stress and strain are taken from the contacts and the cell every globUpdate steps, and at every
+    // step while there is no stiffness to predict them with (no contacts yet, or dynCell, which does
+    // not compute it); the unbalanced force only every globUpdate steps.
+    const bool update = s.iter % globUpdate == 0, measure = update || !(stiff.minCoeff() > 0);
     if (measure) updateStressAndStiffness();
 
     const Real dt = s.dt, volume = cell.volume();
@@ -99,7 +101,7 @@ void PeriTriaxController::action() {
         prevGrow[i] = strainRate[i] = rate;
         cell.velGrad(i, i) = rate;
         // until the next update, the stress follows the cell's strain through the stiffness
-        if (!dynCell && stiff[i] > 0) stress[i] += stiff[i] * rate * dt / volume;
+        if (stiff[i] > 0) stress[i] += stiff[i] * rate * dt / volume;
         strain[i] += rate * dt;
     }
     // work of the stress on the cell's deformation, the velocity gradient taken as the mean of the last
