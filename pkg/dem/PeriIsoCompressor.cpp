@@ -69,12 +69,13 @@ void PeriIsoCompressor::action() {
         }
     }
 
-    // the stress is reached when the mean is within 0.5 %; the unbalanced force is checked only every globalUpdateInt steps
-    if (std::abs(sigma.mean() - goal) > 5e-3 * std::abs(goal)) return;
-    if (s.iter % globalUpdateInt == 0) {
-        currUnbalanced = Shop::unbalancedForce(s, false);
-        if (!(currUnbalanced <= maxUnbalanced)) return;
-    }
+    // the stress is reached when it is within 0.5 % (the mean with keepProportions, else along every axis)
+    // and the unbalanced force is below maxUnbalanced; that force is computed only every globalUpdateInt
+    // steps, the last value (-1: none yet) counting in between
+    const Real tol = 5e-3 * std::abs(goal);
+    if (keepProportions ? std::abs(sigma.mean() - goal) > tol : (sigma.array() - goal).abs().maxCoeff() > tol) return;
+    if (s.iter % globalUpdateInt == 0) currUnbalanced = Shop::unbalancedForce(s, false);
+    if (currUnbalanced > maxUnbalanced) return;
     ++state;
     if ((size_t)state >= stresses.size() && !doneHook.empty()) PyRunner::runCommand(doneHook, "PeriIsoCompressor.doneHook");
 }

@@ -9,7 +9,7 @@ namespace yade {
 class PeriIsoCompressor : public BoundaryController {
 public:
     static constexpr const char* classDoc =
-            "Engine compressing a periodic packing (O.cell) to each stress of stresses in turn (negative: compression): each step the cell shrinks or grows by a step estimated from the mean contact stiffness (at most charLen/100 along its longest edge); a stress counts as reached when the mean normal stress is within 0.5 % of it (and, at the steps checked every globalUpdateInt, the unbalanced force is below maxUnbalanced). doneHook runs after the last one.";
+            "Engine compressing a periodic packing (O.cell) to each stress of stresses in turn (negative: compression): each step the cell shrinks or grows by a step estimated from the mean contact stiffness (at most charLen/100 along its longest edge); a stress counts as reached when the mean normal stress (every normal stress without keepProportions) is within 0.5 % of it (and, at the steps checked every globalUpdateInt, the unbalanced force is below maxUnbalanced). doneHook runs after the last one.";
     std::vector<Real> stresses;
     Real charLen = -1;
     Real maxSpan = -1;
