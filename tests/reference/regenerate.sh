@@ -7,3 +7,5 @@ for s in bouncing_sphere oblique_impact; do
 done
 # the FrictVisco law's scenes (tests/test_frictvisco.py): one JSON line
 yade -n -x -j1 frictvisco.py 2>/dev/null | grep '^FRICTVISCO ' | sed 's/^FRICTVISCO //' > data/frictvisco.json
+# the periodic cell controllers (tests/test_peri_controllers.py): one JSON line
+yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 's/^PERICONTROLLERS //' > data/peri_controllers.json
