@@ -194,6 +194,9 @@ class Filler:
             return [Vector2(a, a + 0.0013)]
         if isinstance(val, Vector3i):
             return [Vector3i(k, k + 1, k + 2)]
+        if isinstance(val, Matrix3):  # (PeriTriaxController.stressTensor; the cell's are set in build_zoo)
+            a = self.real()
+            return [Matrix3(a, .1, .2, .3, a + .5, .6, .7, .8, a + .9)]
         if isinstance(val, Quaternion):
             return [Quaternion(Vector3(.3, .5, .8 + .01 * k), .4 + .01 * k)]
         if isinstance(val, list) and name == 'vertices':  # a facet: a non-degenerate triangle
@@ -236,7 +239,7 @@ class Filler:
 def copied(v):
     if isinstance(v, list):
         return [copied(x) for x in v]
-    if isinstance(v, (Vector2, Vector3, Vector3i, Quaternion)):
+    if isinstance(v, (Vector2, Vector3, Vector3i, Quaternion, Matrix3)):
         return type(v)(v)
     return v
 

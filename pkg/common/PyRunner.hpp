@@ -18,6 +18,9 @@ public:
     void action() override;
     using CommandRunner = std::function<void(const std::string&)>;
     static void setCommandRunner(CommandRunner runner);
+    // Runs a Python command in the script's namespace (PyRunner.command, a controller's doneHook);
+    // `who` names the caller if there is no interpreter. Python errors propagate as exceptions.
+    static void runCommand(const std::string& command, const std::string& who = "PyRunner");
 };
 
 } // namespace yade

@@ -308,6 +308,12 @@ static void bindExtras(py::module_& m) {
                 pe.setSlaves(toGroups(v));
             },
             "The groups of engines: each item an engine (a group of one) or a list of engines run in that order");
+    // (read-only properties that the reference keeps out of dict(), as it does)
+    existing<PeriIsoCompressor, BoundaryController>()
+            .def_property_readonly("sigma", [](const PeriIsoCompressor& c) { return c.sigma; },
+                    "Normal stresses of the packing, -Σ|f_i| / (area of face i) over the contacts, predicted to the end of the step [Pa]")
+            .def_property_readonly("currUnbalanced", [](const PeriIsoCompressor& c) { return c.currUnbalanced; },
+                    "Unbalanced force at the last check (-1: none yet)");
     ctorArgHandlers()["LawDispatcher"] = [](Serializable& s, py::args a) { setFunctorsFromArgs(static_cast<LawDispatcher&>(s), a, "LawDispatcher"); };
 
     existing<BoundDispatcher, Dispatcher>().def("dispFunctor", [](BoundDispatcher& d, std::shared_ptr<Shape> s) {

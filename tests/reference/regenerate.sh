@@ -7,6 +7,9 @@ for s in bouncing_sphere oblique_impact; do
 done
 # the FrictVisco law's scenes (tests/test_frictvisco.py): one JSON line
 yade -n -x -j1 frictvisco.py 2>/dev/null | grep '^FRICTVISCO ' | sed 's/^FRICTVISCO //' > data/frictvisco.json
+# the periodic scenes (tests/test_periodic.py): one JSON line
 yade -n -x -j1 periodic.py 2>/dev/null | grep '^PERIODIC ' | sed 's/^PERIODIC //' > data/periodic.json
 # tutorial 04's deterministic copy (tests/test_tutorials.py): the series it saves
 tmp=$(mktemp -d) && python3 tutorial04_copy.py > "$tmp/t.py" && (cd "$tmp" && yade -n -x -j1 t.py >/dev/null 2>&1) && cp "$tmp"/2*.txt data/tutorial04.txt && rm -rf "$tmp"
+# the periodic cell controllers (tests/test_peri_controllers.py): one JSON line
+yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 's/^PERICONTROLLERS //' > data/peri_controllers.json
