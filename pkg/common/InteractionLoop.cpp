@@ -268,6 +268,11 @@ void InteractionLoop::assignPairsToThreads(int threads) {
         sorted.resize(list.size());
         for (uint32_t k : list) sorted[start[std::min(intrs.pairIds[2 * k], intrs.pairIds[2 * k + 1])]++] = k;
         list.swap(sorted);
+        // in a periodic scene the pairs through the cell's faces (cellDist not zero) last: the others
+        // fill whole batches, which the fast passes and the kept entries take (a batch with one such
+        // pair is gathered in full every step)
+        if (intrs.periodic)
+            std::stable_partition(list.begin(), list.end(), [&](uint32_t k) { return intrs.cellDist[k] == Vector3i::Zero(); });
     }
     // (the per-pair scratch is not kept when large: in a dense packing it was 8 bytes per pair, 5 MB
     // at 50 000 spheres; small ones are, since the lists are rebuilt whenever the pairs change)

@@ -283,12 +283,20 @@ static inline void rotateAspherical(const IntegratorStep& st, long id, Real mass
     angVel = t.angVel;
 }
 
+// m·v, each row's terms summed left to right (as Eigen's product of a 3×3 matrix sums them), for one
+// body (T = Real) or two: the periodic steps take it in every path, which then give the same bits
+template <class T> YADE_KERNEL Vec3<T> matVec(const Matrix3r& m, const Vec3<T>& v) {
+    return {(T(m(0, 0)) * v.x + T(m(0, 1)) * v.y) + T(m(0, 2)) * v.z, (T(m(1, 0)) * v.x + T(m(1, 1)) * v.y) + T(m(1, 2)) * v.z,
+            (T(m(2, 0)) * v.x + T(m(2, 1)) * v.y) + T(m(2, 2)) * v.z};
+}
+static inline Vector3r mulRows(const Matrix3r& m, const Vector3r& v) { return eigen(matVec<Real>(m, vec3(v))); }
+
 // The homogeneous field of a periodic cell (3.6.1, Cell.homoDeform): the new velocity with the field's
 // convective acceleration velGrad·v (2, 3: the last step's velGrad, v before the step, v(t - Δt/2)),
 // then the change of velGrad since the last step times the position before the step.
 static inline void homogeneousField(const IntegratorStep& st, const Vector3r& pos, const Vector3r& accel, Vector3r& vel) {
-    vel = st.convective ? Vector3r(vel + st.dt * (accel + st.prevVelGrad * vel)) : Vector3r(vel + st.dt * accel);
-    vel += st.dVelGrad * pos;
+    vel = st.convective ? Vector3r(vel + st.dt * (accel + mulRows(st.prevVelGrad, vel))) : Vector3r(vel + st.dt * accel);
+    vel = vel + mulRows(st.dVelGrad, pos);
 }
 static inline void homogeneousSpin(const IntegratorStep& st, Vector3r& angVel) { angVel += st.dSpin; }
 
@@ -298,7 +306,7 @@ static inline void homogeneousSpin(const IntegratorStep& st, Vector3r& angVel) {
 template <bool Periodic>
 static inline void accelerate(const IntegratorStep& st, long id, int blocked, Real mass, const Vector3r& inertia, Vector3r& vel, Vector3r& angVel,
         BodyEnergy& e, AsphericalUpdate& a, const Vector3r& pos) {
-    const Vector3r fluct = Periodic ? Vector3r(vel - st.prevVelGrad * pos) : vel;
+    const Vector3r fluct = Periodic ? Vector3r(vel - mulRows(st.prevVelGrad, pos)) : vel;
     const bool damped = st.lambda != 0 && st.h.isDamped[id];
     const Vector3r gFree = freeGravity(st.g, blocked);
     Vector3r undamped;
@@ -386,7 +394,9 @@ template <class T> YADE_KERNEL T dampLane(T a, T v, T halfDt, T lambda) {
 template <class T> YADE_KERNEL Vec3<T> dampVec(const Vec3<T>& a, const Vec3<T>& v, T halfDt, T lambda) {
     return {dampLane(a.x, v.x, halfDt, lambda), dampLane(a.y, v.y, halfDt, lambda), dampLane(a.z, v.z, halfDt, lambda)};
 }
-template <class T> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, long id, Real& maxV2) {
+// Periodic: in a periodic cell (integrateBody's periodic arithmetic: the damping of the fluctuation,
+// homogeneousField, homogeneousSpin).
+template <class T, bool Periodic = false> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, long id, Real& maxV2) {
     constexpr int lanes = lanesOf<T>;
     const BodyStore::Columns& h = st.h;
     LaneIds<T> ids;
@@ -398,7 +408,12 @@ template <class T> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, lo
     // translation (linearAccel with nothing blocked)
     Vec3<T> accel = gather<T>(st.F, ids) / gather(h.mass, ids);
     if (st.gravityDamped) accel = accel + g;
-    accel = select(damped, dampVec(accel, vel, halfDt, lambda), accel);
+    Vec3<T> pos0;
+    if constexpr (Periodic) {
+        pos0 = gather<T>(h.pos, ids);
+        accel = select(damped, dampVec(accel, vel - matVec(st.prevVelGrad, pos0), halfDt, lambda), accel);
+    } else
+        accel = select(damped, dampVec(accel, vel, halfDt, lambda), accel);
     if (!st.gravityDamped) accel = accel + g;
     // rotation (rotateSphere): a still body (no spin, no torque) keeps a zero acceleration, undamped
     const Vec3<T> torque = gather<T>(st.T, ids), inertia = gather<T>(h.inertia, ids);
@@ -407,7 +422,15 @@ template <class T> YADE_KERNEL bool freeSpheresStep(const IntegratorStep& st, lo
     Vec3<T> angAccel = select(still, Vec3<T>::zero(), Vec3<T>(torque.x / inertia.x, torque.y / inertia.y, torque.z / inertia.z));
     angAccel = select(damped & !still, dampVec(angAccel, angVel, halfDt, lambda), angAccel);
     angVel = angVel + dt * angAccel;
-    vel = vel + dt * accel;
+    if constexpr (Periodic) {
+        if (st.homo) {
+            vel = st.convective ? vel + dt * (accel + matVec(st.prevVelGrad, vel)) : vel + dt * accel;
+            vel = vel + matVec(st.dVelGrad, pos0);
+            angVel = angVel + Vec3<T>{T(st.dSpin[0]), T(st.dSpin[1]), T(st.dSpin[2])};
+        } else
+            vel = vel + dt * accel;
+    } else
+        vel = vel + dt * accel;
     const Vec3<T> pos = gather<T>(h.pos, ids) + vel * dt;
     for (int i = 0; i < lanes; ++i)
         if (!finiteState(pos.lane(i), vel.lane(i), angVel.lane(i), BodyEnergy(), h.ori[id + i])) return false;
@@ -428,6 +451,22 @@ static inline void maxMovedSince(const IntegratorStep& st, long b0, long b1, Rea
     for (long id = b0; id < b1; ++id) m = std::max(m, (st.h.pos[id] - st.reference[id]).squaredNorm());
 }
 
+// Bodies b0 .. b1-1 without energy tracking or mask: free spheres by their own step, two at a time;
+// returns the largest id of a body whose new state is not finite (-1: none).
+template <bool Periodic> static inline long freeSpheres(const IntegratorStep& st, long b0, long b1, BodyEnergy& sum, bool& any, Real& maxV2) {
+    long diverged = -1;
+    for (long id = b0; id < b1;) {
+        if (id + 1 < b1 && isFreeSphere(st.h, id) && isFreeSphere(st.h, id + 1) && freeSpheresStep<Two, Periodic>(st, id, maxV2)) {
+            id += 2;
+            continue;
+        }
+        if (!(isFreeSphere(st.h, id) && freeSpheresStep<Real, Periodic>(st, id, maxV2)) && !integrateBody(st, id, sum, any, maxV2))
+            diverged = std::max(diverged, id);
+        ++id;
+    }
+    return diverged;
+}
+
 // Bodies lo .. hi-1, their energy terms into sums (each body's new state does not depend on the
 // thread that computes it), a block of bodies at a time: the second loop (turnSpheres) finds their
 // spins and orientations in cache.
@@ -437,20 +476,14 @@ void NewtonIntegrator::integrateRange(const IntegratorStep& step, long lo, long 
     bool any = sums.any;
     Real maxV2 = x.maxV2, maxMoved2 = x.maxMoved2;
     long diverged = x.diverged;
-    const bool lean = !st.energy && st.moveMask == -1 && !st.periodic;
+    const bool lean = !st.energy && st.moveMask == -1;
     for (long b0 = lo; b0 < hi; b0 += chunkBodies) {
         const long b1 = std::min(hi, b0 + chunkBodies);
-        if (lean) { // (free spheres: their own step, two at a time)
-            for (long id = b0; id < b1;) {
-                if (id + 1 < b1 && isFreeSphere(st.h, id) && isFreeSphere(st.h, id + 1) && freeSpheresStep<Two>(st, id, maxV2)) {
-                    id += 2;
-                    continue;
-                }
-                if (!(isFreeSphere(st.h, id) && freeSpheresStep<Real>(st, id, maxV2)) && !integrateBody(st, id, sum, any, maxV2))
-                    diverged = std::max(diverged, id);
-                ++id;
-            }
-        } else
+        if (lean && st.periodic)
+            diverged = std::max(diverged, freeSpheres<true>(st, b0, b1, sum, any, maxV2));
+        else if (lean)
+            diverged = std::max(diverged, freeSpheres<false>(st, b0, b1, sum, any, maxV2));
+        else
             for (long id = b0; id < b1; ++id)
                 if (!integrateBody(st, id, sum, any, maxV2)) diverged = std::max(diverged, id);
         turnSpheres(st.h, st.spins, b0, b1, st.dt);
