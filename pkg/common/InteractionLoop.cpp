@@ -385,6 +385,15 @@ inline bool InteractionLoop::stillApart(const Body::id_t* ids, size_t i, float* 
     return true;
 }
 
+// A potential pair of two spheres whose body 2 is the image at + shift2 (a periodic scene) farther
+// apart than Ig2_Sphere_Sphere_ScGeom's reach (its test, in the same arithmetic).
+inline bool InteractionLoop::imageApart(const Body::id_t* ids, const Vector3r& shift2) const {
+    const Real ra = shapeRadius[ids[0]], rb = shapeRadius[ids[1]];
+    if (!(ra > 0 && rb > 0 && sphereSphereReach > 0)) return false;
+    const Real r = sphereSphereReach * (ra + rb);
+    return ((shapePos[ids[1]] + shift2) - shapePos[ids[0]]).squaredNorm() > r * r;
+}
+
 // Step 1 of processBatch: the entries j0 .. j1-1 of thread list `list` that the quick rejects
 // leave, with their Ig2 functor and, for existing contacts, their objects and Law2 functor (into
 // sc's entries and contacts); returns how many.
@@ -449,7 +458,14 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         const size_t i = todo ? todo[j] : j;
         const long k = pairs[i];
         const bool shifted = cellDist && cellDist[k] != Vector3i::Zero(); // (body 2's image elsewhere: a periodic scene)
-        apart[j - j0] = quick && !wasReal[k] && !shifted && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD);
+        Vector3r shift2;
+        if (!shifted)
+            apart[j - j0] = quick && !wasReal[k] && stillApart(ids + 2 * k, i, gaps, withFacet, twiceD);
+        else { // (the image moves with the cell: tested every step, no gap kept; 2: not to be kept as apart)
+            shift2 = hSize * cellDist[k].cast<Real>();
+            apart[j - j0] = quick && !wasReal[k] && imageApart(ids + 2 * k, shift2) ? 2 : 0;
+            if (gaps) gaps[i] = -Inf;
+        }
         if (apart[j - j0]) continue;
         if (gaps) gaps[i] = -Inf; // tested again at the next step
         const int c1 = shapeIndex[ids[2 * k]], c2 = shapeIndex[ids[2 * k + 1]];
@@ -481,7 +497,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         if (shifted) {
             contacts[n].shifted = true;
-            contacts[n].shift2 = hSize * cellDist[k].cast<Real>();
+            contacts[n].shift2 = shift2;
             contacts[n].shiftVel2 = prevVelGrad * (prevHSize * cellDist[k].cast<Real>());
         }
         if (!fused) { // (may get a new geometry)
@@ -690,7 +706,7 @@ unsigned char InteractionLoop::keptKindOf(LawFunctor* law, IGeomFunctor* fused, 
 void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t live) {
     KeptEntries& ke = kept[list];
     const unsigned* todo = work[list]->todo;
-    for (size_t j = j0; j < j1; ++j) ke.kind[todo ? todo[j] : j] = sc.apart[j - j0] ? keptApart : keptUnknown;
+    for (size_t j = j0; j < j1; ++j) ke.kind[todo ? todo[j] : j] = sc.apart[j - j0] == 1 ? keptApart : keptUnknown;
     const InteractionContainer& intrs = scene->interactions;
     const Scratch::Entry* entries = sc.entries.data();
     unsigned char kind = keptUnknown; // (of the last kind looked up)

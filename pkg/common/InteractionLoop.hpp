@@ -118,6 +118,7 @@ private:
         return (ra < 0 || rb < 0) && facetSphereReject(ra < 0 ? id2 : id1, ra < 0 ? ra : rb, gap);
     }
     bool facetSphereReject(Body::id_t sphere, Real facetCode, Real& gap) const;
+    bool imageApart(const Body::id_t* ids, const Vector3r& shift2) const;
     // The skin of the fast path (Verlet lists): a potential pair found a gap g beyond reach while
     // every body was within D of its position at the start of the epoch cannot come within reach
     // as long as every body stays within D' with 2D + 2D' < g (each body moved at most D + D'

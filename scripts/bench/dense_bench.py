@@ -3,7 +3,7 @@
 lattice in LAMMPS (dense.lammps), interleaved.
 
     /usr/bin/python3 scripts/bench/dense_bench.py [--sizes 5000[,50000]] [--steps S[,S]] [--repeats 3]
-        [--threads 1[,2]] [--law frict[,viscel,mindlin]] [--no-reference] [--no-lammps] [--no-shares]
+        [--threads 1[,2]] [--law frict[,viscel,mindlin]] [--periodic] [--no-reference] [--no-lammps] [--no-shares]
 
 Each repeat runs every (size, threads) once here, then in the reference (`yade` on PATH), then
 in LAMMPS (`lmp` on PATH), each a fresh process pinned to CPU 0 (CPUs 0-1 with two threads), its
@@ -19,6 +19,9 @@ copy of dense.py with its material, Ip2 and Law2 replaced (LAMMPS runs the Hooke
   viscel  ViscElMat(kn, ks, cn, cs) of the same stiffness as frict, Law2_ScGeom_ViscElPhys_Basic
   mindlin FrictMat, Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin
 With several laws it prints each law's speed here over frict's, pair by pair.
+
+--periodic runs scripts/bench/periodic_dense.py instead: the same lattice filling a periodic cell that
+is slowly compressed (no facet box, no gravity), here and in the reference (LAMMPS not run).
 """
 
 import argparse
@@ -34,6 +37,7 @@ HERE_DIR = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE_DIR))
 LAUNCHER = os.path.join(REPO, "yade")
 SCENE = os.path.join(HERE_DIR, "dense.py")         # verbatim copy of the shared scene
+PERIODIC_SCENE = os.path.join(HERE_DIR, "periodic_dense.py")
 LAMMPS_IN = os.path.join(HERE_DIR, "dense.lammps")  # verbatim copy of the shared input
 LINE_RE = re.compile(r"N=(\d+)\s+steps=(\d+)\s+contacts=(\d+)\s+iter_per_s=([0-9.eE+-]+)")
 RSS_RE = re.compile(r"Maximum resident set size \(kbytes\):\s*(\d+)")
@@ -133,6 +137,7 @@ def main(argv=None):
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--threads", default="1")
     ap.add_argument("--law", default="frict", help="contact laws, comma-separated: " + ", ".join(LAWS))
+    ap.add_argument("--periodic", action="store_true", help="the lattice in a periodic cell (periodic_dense.py)")
     ap.add_argument("--no-reference", action="store_true")
     ap.add_argument("--no-lammps", action="store_true")
     ap.add_argument("--no-shares", action="store_true")
@@ -147,9 +152,11 @@ def main(argv=None):
         if law not in LAWS:
             ap.error("unknown --law %r (known: %s)" % (law, ", ".join(LAWS)))
     ref = None if a.no_reference else (shutil.which("yade-double") or shutil.which("yade"))
-    lmp = None if a.no_lammps else shutil.which("lmp")
+    lmp = None if a.no_lammps or a.periodic else shutil.which("lmp")
     tmpdir = tempfile.mkdtemp(prefix="dense_bench_")
-    scenes = {law: scene_for(law, tmpdir) for law in laws}
+    if a.periodic and laws != ["frict"]:
+        ap.error("--periodic runs the frict law only")
+    scenes = {"frict": PERIODIC_SCENE} if a.periodic else {law: scene_for(law, tmpdir) for law in laws}
     engines = [("here", lambda law, n, s, t: run_yade(LAUNCHER, scenes[law], n, s, t))]
     if ref:
         engines.append(("reference", lambda law, n, s, t: run_yade(ref, scenes[law], n, s, t)))

@@ -3,7 +3,7 @@
 # cell's faces included) by 1 % of the radius, FrictMat / Cundall-Strack, Cundall damping, no gravity.
 # About 3 N contacts, all live, a third of the layers' contacts through the cell's faces.
 # Runs unchanged here and in the reference:  yade -n -x -j1 periodic_dense.py [N] [STEPS]
-# Prints one line: "N=<spheres> steps=<n> contacts=<c> crossing=<c> iter_per_s=<x> particle_steps_per_s=<y>"
+# Prints one line: "N=<spheres> steps=<n> contacts=<c> iter_per_s=<x> particle_steps_per_s=<y> crossing=<c>"
 import sys, time
 from yade.utils import *
 
@@ -41,5 +41,5 @@ t0 = time.time()
 O.run(STEPS, True)
 dt = time.time() - t0
 real = [i for i in O.interactions if i.isReal]
-print("N=%d steps=%d contacts=%d crossing=%d iter_per_s=%.2f particle_steps_per_s=%.4g" % (nSph, STEPS, len(real),
-      sum(1 for i in real if tuple(i.cellDist) != (0, 0, 0)), STEPS / dt, nSph * STEPS / dt))
+print("N=%d steps=%d contacts=%d iter_per_s=%.2f particle_steps_per_s=%.4g crossing=%d" % (nSph, STEPS, len(real), STEPS / dt,
+      nSph * STEPS / dt, sum(1 for i in real if tuple(i.cellDist) != (0, 0, 0))))
