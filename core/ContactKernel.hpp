@@ -19,11 +19,11 @@ namespace yade {
 
 // The two bodies of the contacts of each lane, read from the columns when asked.
 // In a periodic scene (one contact at a time: the fast passes run only in aperiodic scenes) body 2 is
-// the image that `image` says (Contact::shifted).
+// the image that `image` says (Contact::shift).
 template <class T> struct ContactBodies {
     const BodyColumns& b;
     LaneIds<T> id1, id2;
-    const Contact* image = nullptr;
+    const ContactShift* image = nullptr;
     YADE_KERNEL Vec3<T> pos1() const { return gather<T>(b.store.pos, id1); }
     YADE_KERNEL Vec3<T> pos2() const {
         if constexpr (std::is_same<T, Real>::value)
@@ -87,11 +87,11 @@ public:
     void goBatch(const Contact* c, size_t n, char* keep) final {
         const BodyColumns cols{scene->bodies.hot().columns(), nullptr, nullptr};
         for (size_t j = 0; j < n; ++j)
-            keep[j] = one(static_cast<G&>(*c[j].geom), static_cast<P&>(*c[j].phys), c[j].id1, c[j].id2, cols, c[j].shifted ? &c[j] : nullptr);
+            keep[j] = one(static_cast<G&>(*c[j].geom), static_cast<P&>(*c[j].phys), c[j].id1, c[j].id2, cols, c[j].shift);
     }
 
 private:
-    bool one(G& geom, P& phys, Body::id_t id1, Body::id_t id2, const BodyColumns& cols, const Contact* image = nullptr) {
+    bool one(G& geom, P& phys, Body::id_t id1, Body::id_t id2, const BodyColumns& cols, const ContactShift* image = nullptr) {
         Derived& law = static_cast<Derived&>(*this);
         const auto values = G::template Values<Real>::of(geom);
         if (values.apart()) {

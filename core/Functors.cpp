@@ -53,7 +53,7 @@ void IGeomFunctor::goBatch(const BodyColumns&, Contact* c, size_t n, char* resul
         StandIn s(c[j]);
         const Body& b1 = *bodies[c[j].id1];
         const Body& b2 = *bodies[c[j].id2];
-        result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, c[j].shift2, false, s.I); // (periodic: the functor adds the shift)
+        result[j] = go(*b1.shape, *b2.shape, *b1.state, *b2.state, c[j].shift ? c[j].shift->shift2 : Vector3r::Zero(), false, s.I); // (periodic: the functor adds the shift)
         if (s.own && s.I.geom.get() != c[j].geom) c[j].setGeom(s.I.geom); // (a new one)
         else if (!s.own) c[j].geom = s.I.geom.get();
     }

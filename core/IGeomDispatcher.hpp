@@ -30,7 +30,7 @@ public:
     // The batched form: the geometry of the potential or real interactions c[0] .. c[n-1], all
     // of one pair of shape types taken in this functor's order; result[j] is go()'s answer for
     // c[j] (whose geom is set when the functor made one); in a periodic scene body 2 is the image the
-    // contact says (Contact::shifted). The default calls go() once per
+    // contact says (Contact::shift). The default calls go() once per
     // contact (an adapter for functors written in the one-contact form); the library's functors
     // derive from IGeomFunctorBatched.
     virtual void goBatch(const BodyColumns& bodies, Contact* c, size_t n, char* result);
@@ -55,9 +55,9 @@ public:
         const Shape* const* shape = b.shape;
         for (size_t j = 0; j < n; ++j) {
             Contact& x = c[j];
-            if (__builtin_expect(x.shifted, 0)) {
+            if (__builtin_expect(x.shift != nullptr, 0)) {
                 const Kinematics k2 = cols.kinematics(x.id2);
-                const Vector3r pos2 = k2.pos + x.shift2, vel2 = k2.vel + x.shiftVel2;
+                const Vector3r pos2 = k2.pos + x.shift->shift2, vel2 = k2.vel + x.shift->shiftVel2;
                 result[j] = d.Derived::go(static_cast<const S1&>(*shape[x.id1]), static_cast<const S2&>(*shape[x.id2]), cols.kinematics(x.id1),
                         Kinematics{pos2, vel2, k2.angVel, k2.ori}, Vector3r::Zero(), false, x);
             } else

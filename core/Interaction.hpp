@@ -47,6 +47,11 @@ public:
 // while Python holds it). A geometry made by an Ig2 functor for a new contact is kept in *made
 // until the loop has its physics and moves both into a pool.
 class InteractionContainer;
+// Body 2's image in a periodic scene: at pos2 + shift2, moving at vel2 + shiftVel2 (from the pair's
+// cellDist: hSize·cellDist, and the field's velocity difference between the images).
+struct ContactShift {
+    Vector3r shift2, shiftVel2;
+};
 struct Contact {
     Interaction* I = nullptr;               // the interaction, or null: entry k of *owner
     InteractionContainer* owner = nullptr;
@@ -55,10 +60,9 @@ struct Contact {
     IPhys* phys = nullptr;
     Body::id_t id1 = -1, id2 = -1;
     std::shared_ptr<IGeom>* made = nullptr; // where a new geometry goes (the loop's scratch)
-    // In a periodic scene (shifted): body 2's image is at pos2 + shift2 and moves at vel2 + shiftVel2
-    // (its cellDist through O.cell: hSize·cellDist, velGrad·shift2). The functors see the image.
-    bool shifted = false;
-    Vector3r shift2 = Vector3r::Zero(), shiftVel2 = Vector3r::Zero();
+    // In a periodic scene, a pair through the cell's faces (else null): where body 2's image is (the
+    // functors see the image instead of body 2).
+    const ContactShift* shift = nullptr;
     bool isReal() const { return geom && phys; }
     Interaction& interaction() const; // (InteractionContainer.cpp)
     Contact() = default;

@@ -690,9 +690,19 @@ def test_avoid_self_interaction_mask_as_in_reference(masks, contacts):
 
 # ====================================================================== 10. functor type chain
 
-def test_law2_missing_for_ig2_product_raises_value_error_naming_scgeom():
-    with pytest.raises(ValueError, match='ScGeom'):
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [])
+def test_an_interaction_loop_without_law2_functors_makes_contacts_without_forces():
+    """An empty list of Law2 functors is accepted, as the reference does (its regression test
+    pbc.testScGeomIncidentVelocity builds one): contacts get their geometry and physics, and no force.
+    (A list whose functors accept none of the Ig2 products is refused: checkFunctorChain.)"""
+    m = mat()
+    O.bodies.append([sphere((0, 0, 0), 0.1, material=m), sphere((0.19, 0, 0), 0.1, material=m)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], []), NewtonIntegrator()]
+    O.dt = 1e-6
+    O.run(3, True)
+    i = O.interactions[0, 1]
+    assert i.isReal and abs(i.geom.penetrationDepth - 0.01) < 1e-9 and i.phys.kn > 0
+    assert O.forces.f(0) == Vector3.Zero and O.forces.f(1) == Vector3.Zero
 
 
 def test_body_with_a_shape_without_functors_takes_no_part():

@@ -405,7 +405,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     unsigned char* withFacet = skin.active ? skin.withFacet[list].data() : nullptr;
     const unsigned* todo = work[list]->todo;
     const bool fuse = fusedPasses;
-    // a periodic scene: each pair's body 2 is the image of its cellDist (Contact::shifted)
+    // a periodic scene: each pair's body 2 is the image of its cellDist (Contact::shift)
     const Vector3i* cellDist = intrs.periodic ? intrs.cellDist.data() : nullptr;
     const Matrix3r hSize = scene->cell->hSize, prevHSize = scene->cell->prevHSize, prevVelGrad = scene->cell->prevVelGrad;
     const int* shapeIndex = shapeCache.shapeIndex.data();
@@ -415,6 +415,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     if (sc.entries.size() < batchEntries) {
         sc.entries.resize(batchEntries);
         sc.contacts.resize(batchEntries);
+        sc.shifts.resize(batchEntries);
         sc.made.resize(batchEntries);
         sc.flags.resize(batchEntries);
         sc.apart.resize(batchEntries);
@@ -496,9 +497,8 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1, (unsigned)i} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0, (unsigned)i};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
         if (shifted) {
-            contacts[n].shifted = true;
-            contacts[n].shift2 = shift2;
-            contacts[n].shiftVel2 = prevVelGrad * (prevHSize * cellDist[k].cast<Real>());
+            sc.shifts[n] = ContactShift{shift2, prevVelGrad * (prevHSize * cellDist[k].cast<Real>())};
+            contacts[n].shift = &sc.shifts[n];
         }
         if (!fused) { // (may get a new geometry)
             contacts[n].made = made + n;
@@ -631,6 +631,8 @@ size_t InteractionLoop::settleContacts(Scratch& sc, size_t n, std::string& error
         // (the pool's, chosen before the parallel part; for a pool made since, chosen here)
         x.law = pool.lawTable == lawDispatcher->tableGeneration() ? pool.law : lawDispatcher->getFunctor(*c.geom, *c.phys).functor;
         if (!x.law) {
+            setWasReal(wasReal, x.k, true); // (no Law2 functor at all: the contact stays, without forces)
+            if (lawDispatcher->functors.empty()) continue;
 #pragma omp critical(yadeError)
             error = "no Law2 functor for " + c.geom->getClassName() + "+" + c.phys->getClassName();
             continue;

@@ -193,6 +193,7 @@ private:
         };
         std::vector<Entry> entries;
         std::vector<Contact> contacts; // (entry e: contacts[e])
+        std::vector<ContactShift> shifts; // (entry e, a periodic pair through a face: where its body 2 is)
         std::vector<std::shared_ptr<IGeom>> made; // (entry e: a new geometry, until it joins a pool)
         std::vector<Contact> batch;
         std::vector<size_t> where;

@@ -12,9 +12,9 @@ void Ig2_Sphere_Sphere_ScGeom::goBatch(const BodyColumns& b, Contact* c, size_t 
     const Real* radius = b.radius;
     for (size_t j = 0; j < n; ++j) {
         Contact& x = c[j];
-        if (__builtin_expect(x.shifted, 0)) { // (a periodic scene: body 2's image)
+        if (__builtin_expect(x.shift != nullptr, 0)) { // (a periodic scene: body 2's image)
             const Kinematics k2 = cols.kinematics(x.id2);
-            const Vector3r pos2 = k2.pos + x.shift2, vel2 = k2.vel + x.shiftVel2;
+            const Vector3r pos2 = k2.pos + x.shift->shift2, vel2 = k2.vel + x.shift->shiftVel2;
             result[j] = go(radius[x.id1], radius[x.id2], cols.kinematics(x.id1), Kinematics{pos2, vel2, k2.angVel, k2.ori}, Vector3r::Zero(), false, x);
         } else
             result[j] = go(radius[x.id1], radius[x.id2], cols.kinematics(x.id1), cols.kinematics(x.id2), Vector3r::Zero(), false, x);
