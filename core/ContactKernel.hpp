@@ -18,22 +18,25 @@
 namespace yade {
 
 // The two bodies of the contacts of each lane, read from the columns when asked.
-// In a periodic scene (one contact at a time: the fast passes run only in aperiodic scenes) body 2 is
-// the image that `image` says (Contact::shift).
+// In a periodic scene, for pairs through the cell's faces, body 2 is its image (Contact::shift): the one
+// contact `image` says, or in a fast pass lanes[0] (shift2) and lanes[1] (shiftVel2) of each lane.
 template <class T> struct ContactBodies {
     const BodyColumns& b;
     LaneIds<T> id1, id2;
     const ContactShift* image = nullptr;
+    const Vec3<T>* lanes = nullptr;
     YADE_KERNEL Vec3<T> pos1() const { return gather<T>(b.store.pos, id1); }
     YADE_KERNEL Vec3<T> pos2() const {
         if constexpr (std::is_same<T, Real>::value)
             if (image) return gather<T>(b.store.pos, id2) + vec3(image->shift2);
+        if (lanes) return gather<T>(b.store.pos, id2) + lanes[0];
         return gather<T>(b.store.pos, id2);
     }
     YADE_KERNEL Vec3<T> vel1() const { return gather<T>(b.store.vel, id1); }
     YADE_KERNEL Vec3<T> vel2() const {
         if constexpr (std::is_same<T, Real>::value)
             if (image) return gather<T>(b.store.vel, id2) + vec3(image->shiftVel2);
+        if (lanes) return gather<T>(b.store.vel, id2) + lanes[1];
         return gather<T>(b.store.vel, id2);
     }
     YADE_KERNEL Vec3<T> angVel1() const { return gather<T>(b.store.angVel, id1); }
@@ -140,9 +143,11 @@ template <class Ig2, class Law> struct KernelPass {
         size_t j = 0;
         for (; j + 1 < n; j += 2) {
             for (size_t ahead = j + kernelLookahead; ahead < std::min(n, j + kernelLookahead + 2); ++ahead) prefetch(c[ahead], b);
-            step<Two>(ig2, law, s, b, c + j, keep + j, force, torque);
+            if (__builtin_expect(c[j].shift || c[j + 1].shift, 0)) step<Two, true>(ig2, law, s, b, c + j, keep + j, force, torque);
+            else step<Two>(ig2, law, s, b, c + j, keep + j, force, torque);
         }
-        if (j < n) step<Real>(ig2, law, s, b, c + j, keep + j, force, torque);
+        if (j < n && c[j].shift) step<Real, true>(ig2, law, s, b, c + j, keep + j, force, torque);
+        else if (j < n) step<Real>(ig2, law, s, b, c + j, keep + j, force, torque);
         if (force && n) s.forces.markAdded();
     }
 
@@ -156,10 +161,22 @@ private:
             __builtin_prefetch(&b.store.angVel[id]);
         }
     }
-    template <class T>
+    // Shifted: a periodic scene's pairs through the cell's faces among them (Contact::shift; a lane
+    // without one gets a zero shift)
+    template <class T, bool Shifted = false>
     YADE_KERNEL static void step(const Ig2& ig2, Law& law, Scene& s, const BodyColumns& b, Contact* c, char* keep, Vector3r* force, Vector3r* torque) {
         constexpr int lanes = lanesOf<T>;
         ContactBodies<T> bodies{b, {}, {}};
+        Vec3<T> images[2];
+        if constexpr (Shifted) {
+            for (int w = 0; w < 2; ++w) {
+                auto part = [&](int axis) {
+                    return eachLane<T>([&](int i) { return c[i].shift ? (w ? c[i].shift->shiftVel2 : c[i].shift->shift2)[axis] : Real(0); });
+                };
+                images[w] = Vec3<T>{part(0), part(1), part(2)};
+            }
+            bodies.lanes = images;
+        }
         Rows<G, T> geom;
         Rows<P, T> phys;
         for (int i = 0; i < lanes; ++i) {

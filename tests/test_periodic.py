@@ -353,3 +353,17 @@ def test_the_references_own_pbc_tests():
               'print("RESULT", r.testsRun, len(r.failures), [t.id().split(".")[-1] for t, _ in r.errors])\n') % REFERENCE_PBC
     out = subprocess.run([sys.executable, '-c', script], env=dict(os.environ), capture_output=True, text=True, timeout=300).stdout
     assert "RESULT 8 0 ['testL3GeomIncidentVelocity']" in out, out
+
+
+def test_fast_passes_give_the_bits_of_the_one_contact_path():
+    """The fused passes (two contacts at a time, images of pairs through the cell's faces included) and
+    the kept batches give the same bits as the one-contact path (InteractionLoop.fusedPasses=False)."""
+    runs = []
+    for fused in (True, False):
+        O.reset()
+        packingScene()
+        O.engines[2].fusedPasses = fused
+        O.run(300, True)
+        runs.append(snapshot())
+    assert np.array_equal(runs[0][0], runs[1][0]) and runs[0][3] == runs[1][3]
+    assert sum(1 for c in runs[0][3] if c[2] != (0, 0, 0)) >= 10

@@ -492,7 +492,7 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
         prefetchObject(geom);
         prefetchObject(phys);
         // an existing contact whose Ig2 and Law2 functors have a fast pass: both run in step 4
-        IGeomFunctor* fused = fuse && !shifted && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
+        IGeomFunctor* fused = fuse && law && geom && phys ? fastPass(sc, geomEntry.functor, law) : nullptr;
         sc.oneGeomFunctor &= !fused && (n == 0 || entries[0].geom == geomEntry.functor);
         entries[n] = fused ? Scratch::Entry{k, nullptr, law, fused, sc.pass, 1, (unsigned)i} : Scratch::Entry{k, geomEntry.functor, nullptr, nullptr, nullptr, 0, (unsigned)i};
         contacts[n] = Contact(&intrs, k, geom, phys, ids[2 * k], ids[2 * k + 1]);
@@ -717,6 +717,7 @@ void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j
         const Scratch::Entry& x = entries[e];
         const uint32_t where = intrs.contactOf[x.k];
         if (!x.fused || where == InteractionContainer::noContact) continue; // (a new contact, or one the law ended)
+        if (sc.contacts[e].shift) continue; // (a pair through a periodic cell's face: its image is not kept)
         if (!kindOf || x.law != kindOf->law || x.fused != kindOf->fused) {
             kind = keptKindOf(x.law, x.fused, x.pass);
             kindOf = &x;
