@@ -140,18 +140,24 @@ template <class Ig2, class Law> struct KernelPass {
         Scene& s = *law.scene;
         Vector3r* const force = s.forces.inPlaceForces(); // (one thread: adds in place, as addContact would)
         Vector3r* const torque = s.forces.inPlaceTorques();
-        size_t j = 0;
-        for (; j + 1 < n; j += 2) {
-            for (size_t ahead = j + kernelLookahead; ahead < std::min(n, j + kernelLookahead + 2); ++ahead) prefetch(c[ahead], b);
-            if (__builtin_expect(c[j].shift || c[j + 1].shift, 0)) step<Two, true>(ig2, law, s, b, c + j, keep + j, force, torque);
-            else step<Two>(ig2, law, s, b, c + j, keep + j, force, torque);
-        }
-        if (j < n && c[j].shift) step<Real, true>(ig2, law, s, b, c + j, keep + j, force, torque);
-        else if (j < n) step<Real>(ig2, law, s, b, c + j, keep + j, force, torque);
+        if (__builtin_expect(s.isPeriodic, 0)) steps<true>(ig2, law, s, b, c, n, keep, force, torque);
+        else steps<false>(ig2, law, s, b, c, n, keep, force, torque);
         if (force && n) s.forces.markAdded();
     }
 
 private:
+    // Periodic: the contacts may include pairs through the cell's faces (Contact::shift)
+    template <bool Periodic>
+    static void steps(const Ig2& ig2, Law& law, Scene& s, const BodyColumns& b, Contact* c, size_t n, char* keep, Vector3r* force, Vector3r* torque) {
+        size_t j = 0;
+        for (; j + 1 < n; j += 2) {
+            for (size_t ahead = j + kernelLookahead; ahead < std::min(n, j + kernelLookahead + 2); ++ahead) prefetch(c[ahead], b);
+            if (Periodic && (c[j].shift || c[j + 1].shift)) step<Two, true>(ig2, law, s, b, c + j, keep + j, force, torque);
+            else step<Two>(ig2, law, s, b, c + j, keep + j, force, torque);
+        }
+        if (Periodic && j < n && c[j].shift) step<Real, true>(ig2, law, s, b, c + j, keep + j, force, torque);
+        else if (j < n) step<Real>(ig2, law, s, b, c + j, keep + j, force, torque);
+    }
     static void prefetch(const Contact& x, const BodyColumns& b) {
         prefetchLines(x.geom, (int)std::min<size_t>(4, (sizeof(G) + 63) / 64));
         prefetchLines(x.phys, (int)std::min<size_t>(6, (sizeof(P) + 63) / 64));
