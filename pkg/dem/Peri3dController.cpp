@@ -2,6 +2,7 @@
 #include <pkg/common/PyRunner.hpp>
 #include <pkg/dem/Peri3dController.hpp>
 #include <pkg/dem/Shop.hpp>
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -132,7 +133,11 @@ void Peri3dController::action() {
     }
 
     // the next transformation: the strain increment, turned into the cell's axes, added to the stretch
-    const auto [U, P] = cell.polarDecomposition();
+    // (T = U·P from the singular value decomposition T = W·Σ·Vᵀ: U = W·Vᵀ, P = V·Σ·Vᵀ; it follows the
+    // reference's velGrad more closely, to rounding, than Cell::polarDecomposition's eigen solver)
+    const Eigen::JacobiSVD<Matrix3r> svd(cell.trsf, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Matrix3r U = svd.matrixU() * svd.matrixV().transpose();
+    const Matrix3r P = svd.matrixV() * svd.singularValues().asDiagonal() * svd.matrixV().transpose();
     Matrix3r dEps;
     for (int i = 0; i < 6; ++i) {
         const Real e = dt * strainRate[i] * (i < 3 ? 1 : Real(.5)); // (engineering shear strain: γ = 2ε)
