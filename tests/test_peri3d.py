@@ -146,11 +146,13 @@ def test_packing_as_reference(name, kw, upTo):
 
 # ---------------------------------------------------------------- behaviour
 
-def test_save_and_load_in_the_middle_of_a_run(tmp_path):
-    kw = dict(goal=(1e-3, -300, -50, 0, 0, 0), stressMask=0b000110, nSteps=12)
+@pytest.mark.parametrize('fileName', ['peri3d.xml', 'peri3d.yade'])
+def test_save_and_load_in_the_middle_of_a_run(tmp_path, fileName):
+    """the predictor's memory (the last stress error) and the new kinds (pathsCounter, the paths) are saved"""
+    kw = dict(goal=(1e-3, -300, -50, 0, 0, 0), stressMask=0b000110, nSteps=12, yyPath=[(1, 2), (2, 1)], zzPath=[(3, -1), (4, 1)])
     straight = scenes.fixed_steps(kw, 10)
     scenes.fixed_steps(kw, 5)
-    f = str(tmp_path / 'peri3d.xml')
+    f = str(tmp_path / fileName)
     O.save(f)
     O.load(f)
     c = O.engines[3]
@@ -159,6 +161,7 @@ def test_save_and_load_in_the_middle_of_a_run(tmp_path):
         O.step()
         rest.append(scenes.record(c))
     assert_close(rest, straight[5:], 1e-12, 1e-25)
+    assert c.yyPath == [Vector2(1, 2), Vector2(2, 1)] and c.pathsCounter == Vector6i(0, 1, 1, 0, 0, 0)
 
 
 def test_done_hook_runs_every_step_after_nsteps_and_dead_without_it():
