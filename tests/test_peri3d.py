@@ -193,3 +193,17 @@ def test_bad_input_raises():
     c.youngEstimation = 0
     with pytest.raises(ValueError, match='youngEstimation'):
         O.step()
+    c = Peri3dController(goal=(1e-3, 0, 0, 0, 0, 0))
+    scenes.fixed_scene(c)
+    O.cell.trsf = ((1, 0, 0), (0, 0, 0), (0, 0, 1))
+    with pytest.raises(RuntimeError, match='invertible'):
+        O.step()
+    c = Peri3dController(goal=(1e308, 0, 0, 0, 0, 0), maxStrainRate=1e308, nSteps=1)
+    scenes.fixed_scene(c)
+    with pytest.raises(RuntimeError, match='not finite'):
+        O.step()
+    for kw in (dict(stressMask=-1, goal=(1, 2, 3, 4, 5, 6)), dict(maxStrainRate=0, goal=(1e-3, 0, 0, 0, 0, 0))):
+        c = Peri3dController(**kw)  # (odd but harmless: every component a stress; nothing moves)
+        scenes.fixed_scene(c)
+        O.run(3, True)
+        assert c.strainRate.maxAbsCoeff() < 1e-10

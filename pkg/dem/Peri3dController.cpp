@@ -66,6 +66,8 @@ void Peri3dController::action() {
     }
     Cell& cell = *s.cell;
     const Real dt = s.dt;
+    if (!cell.trsf.allFinite() || !(std::abs(cell.trsf.determinant()) > 0))
+        throw std::runtime_error("Peri3dController: O.cell.trsf must be finite and invertible (the velocity gradient is computed from its inverse)");
 
     // which components are stresses, which strains
     lenPe = lenPs = 0;
@@ -144,7 +146,10 @@ void Peri3dController::action() {
         dEps(voigtRow[i], voigtCol[i]) = dEps(voigtCol[i], voigtRow[i]) = e;
     }
     const Matrix3r next = U * (P + U.transpose() * dEps * U);
-    cell.velGrad = (next * cell.trsf.inverse() - Matrix3r::Identity()) / dt;
+    const Matrix3r velGrad = (next * cell.trsf.inverse() - Matrix3r::Identity()) / dt;
+    if (!velGrad.allFinite())
+        throw std::runtime_error("Peri3dController: the velocity gradient is not finite (strain rates " + show(strainRate) + "; lower maxStrainRate or goal)");
+    cell.velGrad = velGrad;
 
     progress += slowDown / nSteps;
     if (progress >= 1 || strain.cwiseAbs().maxCoeff() >= maxStrain) {
