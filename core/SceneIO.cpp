@@ -194,6 +194,14 @@ private:
                 integer(x[0]), buf += ' ', integer(x[1]), buf += ' ', integer(x[2]);
                 break;
             }
+            case AttrKind::Vector6i: {
+                const auto& x = *static_cast<Vector6i*>(p);
+                for (int i = 0; i < 6; ++i) {
+                    if (i) buf += ' ';
+                    integer(x[i]);
+                }
+                break;
+            }
             case AttrKind::IntVector:
                 for (int x : *static_cast<std::vector<int>*>(p)) integer(x), buf += ' ';
                 break;
@@ -202,6 +210,9 @@ private:
                 break;
             case AttrKind::Vector3rVector:
                 for (const auto& x : *static_cast<std::vector<Vector3r>*>(p)) numbers(x.data(), 3), buf += ' ';
+                break;
+            case AttrKind::Vector2rVector:
+                for (const auto& x : *static_cast<std::vector<Vector2r>*>(p)) numbers(x.data(), 2), buf += ' ';
                 break;
             case AttrKind::StringVector:
                 buf += '\n';
@@ -310,6 +321,12 @@ private:
                 *static_cast<Vector3i*>(p) = Vector3i(toInt(x[0], where), toInt(x[1], where), toInt(x[2], where));
                 break;
             }
+            case AttrKind::Vector6i: {
+                const auto x = numbers(v.text, 6, where);
+                auto& dst = *static_cast<Vector6i*>(p);
+                for (int i = 0; i < 6; ++i) dst[i] = toInt(x[i], where);
+                break;
+            }
             case AttrKind::IntVector: {
                 auto& dst = *static_cast<std::vector<int>*>(p);
                 dst.clear();
@@ -331,6 +348,15 @@ private:
                 checkFlags(a, x.data(), 3 * dst.size() == x.size() && !dst.empty() ? dst[0].data() : nullptr, (int)x.size(), where);
                 dst.clear();
                 for (size_t i = 0; i < x.size(); i += 3) dst.emplace_back(x[i], x[i + 1], x[i + 2]);
+                break;
+            }
+            case AttrKind::Vector2rVector: {
+                const auto x = numbers(v.text, -1, where);
+                if (x.size() % 2) throw FormatError(where + ": expected pairs of numbers");
+                auto& dst = *static_cast<std::vector<Vector2r>*>(p);
+                checkFlags(a, x.data(), 2 * dst.size() == x.size() && !dst.empty() ? dst[0].data() : nullptr, (int)x.size(), where);
+                dst.clear();
+                for (size_t i = 0; i < x.size(); i += 2) dst.emplace_back(x[i], x[i + 1]);
                 break;
             }
             case AttrKind::StringVector: {

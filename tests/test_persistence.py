@@ -26,7 +26,8 @@ import yade
 from yade import (O, Matrix3, Body, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
                   Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InsertionSortCollider,
                   InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack,
-                  NewtonIntegrator, PyRunner, Quaternion, Serializable, Sphere, State, Vector2, Vector3, Vector3i, setNumThreads)
+                  NewtonIntegrator, PyRunner, Quaternion, Serializable, Sphere, State, Vector2, Vector3, Vector3i, Vector6, Vector6i,
+                  setNumThreads)
 from yade import geom, pack
 from yade.utils import PWaveTimeStep, sphere, wall
 
@@ -194,6 +195,11 @@ class Filler:
             return [Vector2(a, a + 0.0013)]
         if isinstance(val, Vector3i):
             return [Vector3i(k, k + 1, k + 2)]
+        if isinstance(val, Vector6):  # (Peri3dController.goal, stress...)
+            a = self.real()
+            return [Vector6(a, a + .0011, a + .0023, a + .0031, a + .0047, a + .0053)]
+        if isinstance(val, Vector6i):
+            return [Vector6i(k, k + 1, k + 2, k + 3, k + 4, k + 5)]
         if isinstance(val, Matrix3):  # (PeriTriaxController.stressTensor; the cell's are set in build_zoo)
             a = self.real()
             return [Matrix3(a, .1, .2, .3, a + .5, .6, .7, .8, a + .9)]
@@ -202,6 +208,9 @@ class Filler:
         if isinstance(val, list) and name == 'vertices':  # a facet: a non-degenerate triangle
             a = self.real()
             return [[Vector3(a, 0, 0), Vector3(0, a + .1, 0), Vector3(0, 0, a + .2)]]
+        if isinstance(val, list) and name.endswith('Path'):  # Peri3dController: (time, value) points, times increasing
+            a = self.real()
+            return [[Vector2(a, a + .3), Vector2(a + 1, a + .7)]]
         if isinstance(val, list) and name == 'matches':  # MatchMaker: (id1, id2, value) triples
             return [[Vector3(k, k + 1, .25), Vector3(0, k, .5)]]
         if isinstance(val, list) and name not in ('functors', 'callbacks'):  # a list of ints (PartialEngine.ids)
@@ -239,7 +248,7 @@ class Filler:
 def copied(v):
     if isinstance(v, list):
         return [copied(x) for x in v]
-    if isinstance(v, (Vector2, Vector3, Vector3i, Quaternion, Matrix3)):
+    if isinstance(v, (Vector2, Vector3, Vector3i, Vector6, Vector6i, Quaternion, Matrix3)):
         return type(v)(v)
     return v
 

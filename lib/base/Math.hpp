@@ -13,6 +13,7 @@ using Vector2i = Eigen::Matrix<int, 2, 1>;
 using Vector3r = Eigen::Matrix<Real, 3, 1>;
 using Vector3i = Eigen::Matrix<int, 3, 1>;
 using Vector6r = Eigen::Matrix<Real, 6, 1>;
+using Vector6i = Eigen::Matrix<int, 6, 1>;
 using Matrix3r = Eigen::Matrix<Real, 3, 3>;
 using Quaternionr = Eigen::Quaternion<Real>;
 using AngleAxisr = Eigen::AngleAxis<Real>;

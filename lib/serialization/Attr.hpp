@@ -31,7 +31,9 @@ enum class AttrKind {
     Vector2r, Vector2i, Vector3r, Vector3i, Vector6r, Matrix3r, Quaternionr,
     IntVector, RealVector, StringVector, Vector3rVector,
     Ptr,      // std::shared_ptr<T>, T derived from Serializable
-    PtrVector // std::vector<std::shared_ptr<T>>
+    PtrVector, // std::vector<std::shared_ptr<T>>
+    // (added later: appended, since the block format stores a kind by its number)
+    Vector6i, Vector2rVector
 };
 
 template <class M, class Enable = void> struct AttrKindOf; // unsupported member types fail to compile here
@@ -47,12 +49,14 @@ YADE_ATTR_KIND(Vector2i, Vector2i);
 YADE_ATTR_KIND(Vector3r, Vector3r);
 YADE_ATTR_KIND(Vector3i, Vector3i);
 YADE_ATTR_KIND(Vector6r, Vector6r);
+YADE_ATTR_KIND(Vector6i, Vector6i);
 YADE_ATTR_KIND(Matrix3r, Matrix3r);
 YADE_ATTR_KIND(Quaternionr, Quaternionr);
 YADE_ATTR_KIND(std::vector<int>, IntVector);
 YADE_ATTR_KIND(std::vector<Real>, RealVector);
 YADE_ATTR_KIND(std::vector<std::string>, StringVector);
 YADE_ATTR_KIND(std::vector<Vector3r>, Vector3rVector);
+YADE_ATTR_KIND(std::vector<Vector2r>, Vector2rVector);
 #undef YADE_ATTR_KIND
 template <class T> struct AttrKindOf<std::shared_ptr<T>, std::enable_if_t<std::is_base_of_v<Serializable, T>>> {
     static constexpr AttrKind kind = AttrKind::Ptr;

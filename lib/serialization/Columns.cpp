@@ -41,6 +41,7 @@ size_t Columns::width(AttrKind k) {
         case AttrKind::Vector3r: return sizeof(Vector3r);
         case AttrKind::Vector3i: return sizeof(Vector3i);
         case AttrKind::Vector6r: return sizeof(Vector6r);
+        case AttrKind::Vector6i: return sizeof(Vector6i);
         case AttrKind::Matrix3r: return sizeof(Matrix3r);
         case AttrKind::Quaternionr: return sizeof(Quaternionr);
         case AttrKind::Ptr: return sizeof(ObjectRef);
@@ -116,6 +117,12 @@ void writeVariable(Encoder& e, const AttrInfo& a, void* p, RefWriter* refs) {
             for (const auto& x : v) e.bytes(x.data(), 3 * sizeof(Real));
             break;
         }
+        case AttrKind::Vector2rVector: {
+            const auto& v = *static_cast<std::vector<Vector2r>*>(p);
+            e.size(v.size());
+            for (const auto& x : v) e.bytes(x.data(), 2 * sizeof(Real));
+            break;
+        }
         case AttrKind::StringVector: {
             const auto& v = *static_cast<std::vector<std::string>*>(p);
             e.size(v.size());
@@ -160,6 +167,15 @@ void readVariable(Cursor& c, const AttrInfo& a, void* p, RefReader* refs, const 
             for (auto& v : x) std::memcpy(v.data(), c.bytes(3 * sizeof(Real)), 3 * sizeof(Real));
             auto& dst = *static_cast<std::vector<Vector3r>*>(p);
             if (n) Validate::checkFlags(a, x[0].data(), dst.size() == n ? dst[0].data() : nullptr, int(3 * n), where);
+            dst = std::move(x);
+            break;
+        }
+        case AttrKind::Vector2rVector: {
+            const uint64_t n = c.count(2 * sizeof(Real));
+            std::vector<Vector2r> x(n);
+            for (auto& v : x) std::memcpy(v.data(), c.bytes(2 * sizeof(Real)), 2 * sizeof(Real));
+            auto& dst = *static_cast<std::vector<Vector2r>*>(p);
+            if (n) Validate::checkFlags(a, x[0].data(), dst.size() == n ? dst[0].data() : nullptr, int(2 * n), where);
             dst = std::move(x);
             break;
         }

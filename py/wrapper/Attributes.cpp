@@ -25,12 +25,14 @@ static const char* kindName(AttrKind k) {
         case AttrKind::Vector3r: return "Vector3";
         case AttrKind::Vector3i: return "Vector3i";
         case AttrKind::Vector6r: return "Vector6";
+        case AttrKind::Vector6i: return "Vector6i";
         case AttrKind::Matrix3r: return "Matrix3";
         case AttrKind::Quaternionr: return "Quaternion";
         case AttrKind::IntVector: return "list of int";
         case AttrKind::RealVector: return "list of float";
         case AttrKind::StringVector: return "list of str";
         case AttrKind::Vector3rVector: return "list of Vector3";
+        case AttrKind::Vector2rVector: return "list of Vector2";
         case AttrKind::Ptr:
         case AttrKind::PtrVector: return "object";
     }
@@ -70,12 +72,14 @@ py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
         case AttrKind::Vector3r: return view(static_cast<Vector3r*>(p), owner);
         case AttrKind::Vector3i: return view(static_cast<Vector3i*>(p), owner);
         case AttrKind::Vector6r: return view(static_cast<Vector6r*>(p), owner);
+        case AttrKind::Vector6i: return view(static_cast<Vector6i*>(p), owner);
         case AttrKind::Matrix3r: return view(static_cast<Matrix3r*>(p), owner);
         case AttrKind::Quaternionr: return view(static_cast<Quaternionr*>(p), owner);
         case AttrKind::IntVector: return py::cast(*static_cast<std::vector<int>*>(p));
         case AttrKind::RealVector: return py::cast(*static_cast<std::vector<Real>*>(p));
         case AttrKind::StringVector: return py::cast(*static_cast<std::vector<std::string>*>(p));
         case AttrKind::Vector3rVector: return py::cast(*static_cast<std::vector<Vector3r>*>(p));
+        case AttrKind::Vector2rVector: return py::cast(*static_cast<std::vector<Vector2r>*>(p));
         case AttrKind::Ptr: return py::cast(a.getPtr(p));
         case AttrKind::PtrVector: return py::cast(a.getPtrVector(p));
     }
@@ -129,6 +133,7 @@ static py::object copyOf(Serializable& s, const AttrInfo& a) {
         case AttrKind::Vector3r: return py::cast(Vector3r(*static_cast<Vector3r*>(p)));
         case AttrKind::Vector3i: return py::cast(Vector3i(*static_cast<Vector3i*>(p)));
         case AttrKind::Vector6r: return py::cast(Vector6r(*static_cast<Vector6r*>(p)));
+        case AttrKind::Vector6i: return py::cast(Vector6i(*static_cast<Vector6i*>(p)));
         case AttrKind::Matrix3r: return py::cast(Matrix3r(*static_cast<Matrix3r*>(p)));
         case AttrKind::Quaternionr: return py::cast(Quaternionr(*static_cast<Quaternionr*>(p)));
         default: return getAttr(s, a, py::none());
@@ -196,6 +201,7 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
         case AttrKind::Vector3r: setMatrixLike<Vector3r>(p, v, where, a); break;
         case AttrKind::Vector3i: setMatrixLike<Vector3i>(p, v, where, a); break;
         case AttrKind::Vector6r: setMatrixLike<Vector6r>(p, v, where, a); break;
+        case AttrKind::Vector6i: setMatrixLike<Vector6i>(p, v, where, a); break;
         case AttrKind::Matrix3r: setMatrixLike<Matrix3r>(p, v, where, a); break;
         case AttrKind::Quaternionr: {
             Quaternionr q = castOr<Quaternionr>(v, where, expected);
@@ -215,6 +221,12 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
             auto x = castOr<std::vector<Vector3r>>(v, where, expected);
             for (const auto& e : x) checkValue(where, a, e.data(), 3);
             *static_cast<std::vector<Vector3r>*>(p) = x;
+            break;
+        }
+        case AttrKind::Vector2rVector: {
+            auto x = castOr<std::vector<Vector2r>>(v, where, expected);
+            for (const auto& e : x) checkValue(where, a, e.data(), 2);
+            *static_cast<std::vector<Vector2r>*>(p) = x;
             break;
         }
         case AttrKind::Ptr: {

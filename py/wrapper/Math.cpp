@@ -40,6 +40,7 @@ namespace {
 	template <> struct PyName<Vector3r> { static constexpr const char* value = "Vector3"; };
 	template <> struct PyName<Vector3i> { static constexpr const char* value = "Vector3i"; };
 	template <> struct PyName<Vector6r> { static constexpr const char* value = "Vector6"; };
+	template <> struct PyName<Vector6i> { static constexpr const char* value = "Vector6i"; };
 	template <> struct PyName<Matrix3r> { static constexpr const char* value = "Matrix3"; };
 	template <> struct PyName<Quaternionr> { static constexpr const char* value = "Quaternion"; };
 
@@ -457,6 +458,7 @@ void registerMath(py::module_& m)
 	py::class_<Vector3r>    v3(m, "Vector3", "3d vector of reals (minieigen API)");
 	py::class_<Vector3i>    v3i(m, "Vector3i", "3d vector of integers (minieigen API)");
 	py::class_<Vector6r>    v6(m, "Vector6", "6d vector of reals (minieigen API)");
+	py::class_<Vector6i>    v6i(m, "Vector6i", "6d vector of integers (minieigen API)");
 	py::class_<Matrix3r>    m3(m, "Matrix3", "3x3 matrix of reals (minieigen API)");
 	py::class_<Quaternionr> q(m, "Quaternion", "quaternion representing a rotation (minieigen API)");
 
@@ -465,6 +467,7 @@ void registerMath(py::module_& m)
 	defVector(v3);
 	defVector(v3i);
 	defVector(v6);
+	defVector(v6i);
 	defMatrix3(m3);
 	defQuaternion(q);
 
@@ -480,6 +483,15 @@ void registerMath(py::module_& m)
 	       py::arg("tail"))
 	        .def("head", [](const Vector6r& v) -> Vector3r { return v.head<3>(); })
 	        .def("tail", [](const Vector6r& v) -> Vector3r { return v.tail<3>(); });
+	v6i.def(py::init([](const Vector3i& head, const Vector3i& tail) {
+		       Vector6i v;
+		       v << head, tail;
+		       return v;
+	       }),
+	        py::arg("head"),
+	        py::arg("tail"))
+	        .def("head", [](const Vector6i& v) -> Vector3i { return v.head<3>(); })
+	        .def("tail", [](const Vector6i& v) -> Vector3i { return v.tail<3>(); });
 }
 
 } // namespace yade

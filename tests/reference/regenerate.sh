@@ -13,3 +13,5 @@ yade -n -x -j1 periodic.py 2>/dev/null | grep '^PERIODIC ' | sed 's/^PERIODIC //
 tmp=$(mktemp -d) && python3 tutorial04_copy.py > "$tmp/t.py" && (cd "$tmp" && yade -n -x -j1 t.py >/dev/null 2>&1) && cp "$tmp"/2*.txt data/tutorial04.txt && rm -rf "$tmp"
 # the periodic cell controllers (tests/test_peri_controllers.py): one JSON line
 yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 's/^PERICONTROLLERS //' > data/peri_controllers.json
+# Peri3dController (tests/test_peri3d.py): one JSON line
+yade -n -x -j1 peri3d.py 2>/dev/null | grep '^PERI3D ' | sed 's/^PERI3D //' > data/peri3d.json
