@@ -158,6 +158,7 @@ TSAN_TESTS=(
     tests/test_omega.py
     tests/test_pyrunner.py
     tests/test_stability.py
+    tests/test_periodic.py
 )
 tsan_stage() {
     local t0 t1 rdir rc archer
