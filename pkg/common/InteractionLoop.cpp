@@ -704,7 +704,9 @@ unsigned char InteractionLoop::keptKindOf(LawFunctor* law, IGeomFunctor* fused, 
 }
 
 // After a batch computed in full: what each of its entries was, for the next steps (live: the
-// entries left for step 4, all computed).
+// entries left for step 4, all computed). In a periodic scene only pairs of cellDist zero are kept (the
+// collider counts a change of a pair's cellDist in InteractionContainer::changes: every kept entry is
+// then stale).
 void InteractionLoop::keepBatch(const Scratch& sc, int list, size_t j0, size_t j1, size_t live) {
     KeptEntries& ke = kept[list];
     const unsigned* todo = work[list]->todo;
@@ -783,13 +785,13 @@ bool InteractionLoop::replayBatch(int list, size_t j0, size_t j1, bool quick, co
 void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
         std::vector<std::pair<const Shape*, const Shape*>>& missingIg2, std::string& error) {
     const BodyColumns columns{scene->bodies.hot().columns(), shapeCache.shape.data(), shapeCache.radius.data()};
-    if (keepNow && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
+    if (fusedPasses && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
     if (n > 0) computeGeometry(sc, n, columns);
     const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
-    if (keepNow) keepBatch(sc, list, j0, j1, live);
+    if (fusedPasses) keepBatch(sc, list, j0, j1, live);
 }
 
 void InteractionLoop::action() {
@@ -930,7 +932,6 @@ void InteractionLoop::runLoop() {
         InteractionContainer& intrs;
         ~Sweep() { intrs.sweep(); }
     } sweepAfter{intrs};
-    keepNow = fusedPasses;
     const bool quick = fastPath && prepareQuickReject();
     if ((int)scratch.size() < threads) {
         scratch.clear();
@@ -949,7 +950,7 @@ void InteractionLoop::runLoop() {
         }
     prepareSkin(quick);
     const KeptKey key{intrs.changes, s.serial, threadPairsBuild, lawDispatcher->tableGeneration(), externalWrites()};
-    if (!(key == keptKey) || functorsChanged || cacheBuilt || !keepNow) { // (every kept entry is stale)
+    if (!(key == keptKey) || functorsChanged || cacheBuilt || !fusedPasses) { // (every kept entry is stale)
         keptKey = key;
         ++keptGeneration;
         keptKindCount.store(0);

@@ -76,10 +76,6 @@ private:
     std::vector<Vector3r> quickPos;
     const Vector3r* shapePos = nullptr;
     const Real* shapeRadius = nullptr;
-    // The kept entries in this step (fusedPasses). In a periodic scene the fast passes, the quick
-    // rejects and so the kept entries take only the pairs of cellDist zero (the collider counts a change
-    // of a pair's cellDist in InteractionContainer::changes, which makes every kept entry stale).
-    bool keepNow = true;
     bool quickFromIntegrator = false; // this step's centers are the integrator's positions (the radii cached)
     bool cacheBuilt = false;      // prepareShapes() rebuilt shapeCache in this step
     // Radii of spheres (NaN for other shapes, the facet marker for facets) and facet ids, valid
