@@ -34,8 +34,10 @@ public:
     }
     // A body is dynamic unless all six degrees of freedom are blocked (Body.dynamic in Python
     // sets or clears State.blockedDOFs accordingly).
-    bool isDynamic() const { return state->blockedDOFsMask() != State::DOF_ALL; }
-    void setDynamic(bool d) { state->blockedDOFsMask() = d ? State::DOF_NONE : State::DOF_ALL; }
+    bool isDynamic() const { return (state->blockedDOFsMask() & State::DOF_ALL) != State::DOF_ALL; }
+    void setDynamic(bool d) { state->blockedDOFsMask() = (d ? State::DOF_NONE : State::DOF_ALL) | (state->blockedDOFsMask() & State::clumpedBit); }
+    bool isClump() const { return clumpId >= 0 && clumpId == id; }
+    bool isClumpMember() const { return clumpId >= 0 && clumpId != id; }
     // After an attribute was set from Python: a new state of a body in a scene takes over the
     // body's record (the old one keeps its values); the mask is copied into the record.
     void postLoad() override;
@@ -43,7 +45,9 @@ public:
     std::shared_ptr<BodyStore> store;
     std::weak_ptr<State> boundState; // the state bound to the record
     // Two bodies may collide when their masks share a bit and at least one of them moves.
-    static bool mayCollide(const Body& a, const Body& b) { return (a.mask & b.mask) != 0 && a.id != b.id && (a.isDynamic() || b.isDynamic()); }
+    static bool mayCollide(const Body& a, const Body& b) {
+        return (a.mask & b.mask) != 0 && a.id != b.id && (a.isDynamic() || b.isDynamic()) && !(a.clumpId >= 0 && a.clumpId == b.clumpId);
+    }
 };
 
 } // namespace yade

@@ -214,6 +214,9 @@ private:
             case AttrKind::Vector2rVector:
                 for (const auto& x : *static_cast<std::vector<Vector2r>*>(p)) numbers(x.data(), 2), buf += ' ';
                 break;
+            case AttrKind::QuaternionrVector: // (x y z w, as Quaternionr)
+                for (const auto& x : *static_cast<std::vector<Quaternionr>*>(p)) numbers(x.coeffs().data(), 4), buf += ' ';
+                break;
             case AttrKind::StringVector:
                 buf += '\n';
                 for (const auto& x : *static_cast<std::vector<std::string>*>(p)) {
@@ -357,6 +360,17 @@ private:
                 checkFlags(a, x.data(), 2 * dst.size() == x.size() && !dst.empty() ? dst[0].data() : nullptr, (int)x.size(), where);
                 dst.clear();
                 for (size_t i = 0; i < x.size(); i += 2) dst.emplace_back(x[i], x[i + 1]);
+                break;
+            }
+            case AttrKind::QuaternionrVector: {
+                const auto x = numbers(v.text, -1, where);
+                if (x.size() % 4) throw FormatError(where + ": expected quadruplets of numbers (x y z w)");
+                std::vector<Quaternionr> q;
+                for (size_t i = 0; i < x.size(); i += 4) {
+                    q.emplace_back(x[i + 3], x[i], x[i + 1], x[i + 2]);
+                    if (!q.back().coeffs().allFinite() || q.back().coeffs().squaredNorm() == 0) throw FormatError(where + ": a quaternion is not finite or zero");
+                }
+                *static_cast<std::vector<Quaternionr>*>(p) = std::move(q);
                 break;
             }
             case AttrKind::StringVector: {

@@ -25,7 +25,7 @@ void State::setBlockedDOFs(const std::string& dofs) {
         if (!p) throw std::invalid_argument(std::string("blockedDOFs: invalid letter '") + c + "' (use letters from 'xyzXYZ')");
         mask |= 1 << (p - dofLetters);
     }
-    blockedDOFsMask() = mask;
+    blockedDOFsMask() = mask | (blockedDOFsMask() & clumpedBit);
 }
 
 void State::bind(const std::shared_ptr<BodyStore>& s, long id, int bodyMask) {

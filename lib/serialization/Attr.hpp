@@ -33,7 +33,7 @@ enum class AttrKind {
     Ptr,      // std::shared_ptr<T>, T derived from Serializable
     PtrVector, // std::vector<std::shared_ptr<T>>
     // (added later: appended, since the block format stores a kind by its number)
-    Vector6i, Vector2rVector
+    Vector6i, Vector2rVector, QuaternionrVector
 };
 
 template <class M, class Enable = void> struct AttrKindOf; // unsupported member types fail to compile here
@@ -57,6 +57,7 @@ YADE_ATTR_KIND(std::vector<Real>, RealVector);
 YADE_ATTR_KIND(std::vector<std::string>, StringVector);
 YADE_ATTR_KIND(std::vector<Vector3r>, Vector3rVector);
 YADE_ATTR_KIND(std::vector<Vector2r>, Vector2rVector);
+YADE_ATTR_KIND(std::vector<Quaternionr>, QuaternionrVector);
 #undef YADE_ATTR_KIND
 template <class T> struct AttrKindOf<std::shared_ptr<T>, std::enable_if_t<std::is_base_of_v<Serializable, T>>> {
     static constexpr AttrKind kind = AttrKind::Ptr;

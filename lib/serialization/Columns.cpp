@@ -123,6 +123,12 @@ void writeVariable(Encoder& e, const AttrInfo& a, void* p, RefWriter* refs) {
             for (const auto& x : v) e.bytes(x.data(), 2 * sizeof(Real));
             break;
         }
+        case AttrKind::QuaternionrVector: { // (x y z w, as Quaternionr)
+            const auto& v = *static_cast<std::vector<Quaternionr>*>(p);
+            e.size(v.size());
+            for (const auto& x : v) e.bytes(x.coeffs().data(), 4 * sizeof(Real));
+            break;
+        }
         case AttrKind::StringVector: {
             const auto& v = *static_cast<std::vector<std::string>*>(p);
             e.size(v.size());
@@ -177,6 +183,15 @@ void readVariable(Cursor& c, const AttrInfo& a, void* p, RefReader* refs, const 
             auto& dst = *static_cast<std::vector<Vector2r>*>(p);
             if (n) Validate::checkFlags(a, x[0].data(), dst.size() == n ? dst[0].data() : nullptr, int(2 * n), where);
             dst = std::move(x);
+            break;
+        }
+        case AttrKind::QuaternionrVector: {
+            const uint64_t n = c.count(4 * sizeof(Real));
+            std::vector<Quaternionr> x(n);
+            for (auto& v : x) std::memcpy(v.coeffs().data(), c.bytes(4 * sizeof(Real)), 4 * sizeof(Real));
+            for (const auto& v : x)
+                if (!v.coeffs().allFinite() || v.coeffs().squaredNorm() == 0) throw FormatError(where + ": a quaternion is not finite or zero");
+            *static_cast<std::vector<Quaternionr>*>(p) = std::move(x);
             break;
         }
         case AttrKind::StringVector: {

@@ -61,7 +61,7 @@ void InsertionSortCollider::updateBounds() {
     for (const auto& f : boundDispatcher->functors)
         if (f) f->scene = scene;
     boxes.swap(previousBoxes);
-    boxes.assign(bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, false, false});
+    boxes.assign(bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, -1, false, false});
     // each body on its own (the Bo1 functors write only the bound they are given)
 #pragma omp parallel for schedule(static)
     for (long id = 0; id < n; ++id) {
@@ -77,7 +77,7 @@ void InsertionSortCollider::updateBounds() {
         b->bound->max += Vector3r::Constant(sweep);
         b->bound->refPos = b->state->pos();
         b->bound->lastUpdateIter = scene->iter;
-        boxes[id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->isDynamic(), true};
+        boxes[id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->clumpId, b->isDynamic(), true};
     }
 }
 
@@ -90,7 +90,8 @@ bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {
 
 bool InsertionSortCollider::overlapNow(Body::id_t a, Body::id_t b) const {
     const Box &A = boxes[a], &B = boxes[b];
-    const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic) && !avoidsItself(A.mask, B.mask); // as mayCollide()
+    const bool mayCollide = (A.mask & B.mask) != 0 && a != b && (A.dynamic || B.dynamic) && !avoidsItself(A.mask, B.mask)
+            && !(A.clumpId >= 0 && A.clumpId == B.clumpId); // as mayCollide()
     return mayCollide && boxesOverlap(A, B);
 }
 

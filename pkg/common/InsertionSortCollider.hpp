@@ -49,6 +49,7 @@ private:
         Vector3r min, max;
         Vector3r refPos; // position when the bound was computed
         int mask;
+        int clumpId; // members of one clump do not collide with each other
         bool dynamic;
         bool collidable;
     };

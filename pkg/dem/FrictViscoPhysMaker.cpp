@@ -26,7 +26,7 @@ std::shared_ptr<FrictViscoPhys> makeFrictViscoPhys(Scene& scene, const Interacti
         // the effective mass: a body that is not dynamic counts as infinitely heavy (both not dynamic: the reduced mass)
         const BodyStore::Columns c = scene.bodies.hot().columns();
         const Real m1 = c.mass[I.id1], m2 = c.mass[I.id2];
-        const bool dynamic1 = c.blockedDOFsMask[I.id1] != State::DOF_ALL, dynamic2 = c.blockedDOFsMask[I.id2] != State::DOF_ALL;
+        const bool dynamic1 = (c.blockedDOFsMask[I.id1] & State::DOF_ALL) != State::DOF_ALL, dynamic2 = (c.blockedDOFsMask[I.id2] & State::DOF_ALL) != State::DOF_ALL;
         const Real mass = (dynamic1 && !dynamic2) ? m1 : (dynamic2 && !dynamic1) ? m2 : m1 * m2 / (m1 + m2);
         phys->cn_crit = 2 * std::sqrt(mass * phys->kn);
         phys->cn = betan * phys->cn_crit;

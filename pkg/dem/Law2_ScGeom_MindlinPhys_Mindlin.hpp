@@ -125,7 +125,7 @@ public:
     }
     // Effective mass of the pair; a body that is not dynamic counts as infinitely heavy.
     static Real effectiveMass(const BodyStore::Columns& b, long id1, long id2) {
-        const bool d1 = b.blockedDOFsMask[id1] != State::DOF_ALL, d2 = b.blockedDOFsMask[id2] != State::DOF_ALL;
+        const bool d1 = (b.blockedDOFsMask[id1] & State::DOF_ALL) != State::DOF_ALL, d2 = (b.blockedDOFsMask[id2] & State::DOF_ALL) != State::DOF_ALL;
         const Real m1 = b.mass[id1], m2 = b.mass[id2];
         if (d1 && d2) return m1 * m2 / (m1 + m2);
         return d1 ? m1 : d2 ? m2 : std::max(m1, m2);

@@ -33,6 +33,7 @@ static const char* kindName(AttrKind k) {
         case AttrKind::StringVector: return "list of str";
         case AttrKind::Vector3rVector: return "list of Vector3";
         case AttrKind::Vector2rVector: return "list of Vector2";
+        case AttrKind::QuaternionrVector: return "list of Quaternion";
         case AttrKind::Ptr:
         case AttrKind::PtrVector: return "object";
     }
@@ -80,6 +81,7 @@ py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
         case AttrKind::StringVector: return py::cast(*static_cast<std::vector<std::string>*>(p));
         case AttrKind::Vector3rVector: return py::cast(*static_cast<std::vector<Vector3r>*>(p));
         case AttrKind::Vector2rVector: return py::cast(*static_cast<std::vector<Vector2r>*>(p));
+        case AttrKind::QuaternionrVector: return py::cast(*static_cast<std::vector<Quaternionr>*>(p));
         case AttrKind::Ptr: return py::cast(a.getPtr(p));
         case AttrKind::PtrVector: return py::cast(a.getPtrVector(p));
     }
@@ -227,6 +229,15 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
             auto x = castOr<std::vector<Vector2r>>(v, where, expected);
             for (const auto& e : x) checkValue(where, a, e.data(), 2);
             *static_cast<std::vector<Vector2r>*>(p) = x;
+            break;
+        }
+        case AttrKind::QuaternionrVector: {
+            auto x = castOr<std::vector<Quaternionr>>(v, where, expected);
+            for (auto& e : x) {
+                if (!e.coeffs().allFinite() || e.coeffs().squaredNorm() == 0) throw py::value_error(where + ": a quaternion is not finite or zero");
+                e.normalize();
+            }
+            *static_cast<std::vector<Quaternionr>*>(p) = x;
             break;
         }
         case AttrKind::Ptr: {

@@ -494,9 +494,9 @@ def reorderBlocks(rng, blocks):
 # column, 0 for the kinds of variable length.
 KIND_NAMES = ['Bool', 'Int', 'Long', 'Real', 'String', 'Vector2r', 'Vector2i', 'Vector3r', 'Vector3i', 'Vector6r',
               'Matrix3r', 'Quaternionr', 'IntVector', 'RealVector', 'StringVector', 'Vector3rVector', 'Ptr', 'PtrVector',
-              'Vector6i', 'Vector2rVector']
-KIND_WIDTH = [1, 4, 8, 8, 0, 16, 8, 24, 12, 48, 72, 32, 0, 0, 0, 0, 8, 0, 24, 0]
-_ITEM_WIDTH = {'IntVector': 4, 'RealVector': 8, 'Vector3rVector': 24, 'PtrVector': 8, 'Vector2rVector': 16}
+              'Vector6i', 'Vector2rVector', 'QuaternionrVector']
+KIND_WIDTH = [1, 4, 8, 8, 0, 16, 8, 24, 12, 48, 72, 32, 0, 0, 0, 0, 8, 0, 24, 0, 0]
+_ITEM_WIDTH = {'IntVector': 4, 'RealVector': 8, 'Vector3rVector': 24, 'PtrVector': 8, 'Vector2rVector': 16, 'QuaternionrVector': 32}
 
 
 def _skipVariable(p, i, kind):
