@@ -14,6 +14,7 @@ public:
     id_t id = -1;
     int mask = 1; // bodies collide only when (mask1 & mask2) != 0
     int clumpId = -1;
+    bool bounded = true; // whether the collider gives it a bound (a clump has none: its members have theirs)
     long long iterBorn = -1; // the step (O.iter) and time (O.time) at which it was appended
     Real timeBorn = -1;
     std::shared_ptr<Shape> shape;
@@ -25,6 +26,7 @@ public:
         v.attr("id", id, "Index in O.bodies (-1 while not appended)", Attr::readonly);
         v.attr("mask", mask, "Collision mask: two bodies may interact only if (mask1 & mask2) != 0");
         v.attr("clumpId", clumpId, "Id of the clump this body belongs to (-1: none)", Attr::readonly);
+        v.attr("bounded", bounded, "Whether the collider gives this body a bound (False: it takes no part in collisions; a clump's own body)");
         v.attr("iterBorn", iterBorn, "Step number (O.iter) at which the body was appended to O.bodies (-1: not yet)");
         v.attr("timeBorn", timeBorn, "Time (O.time) at which the body was appended to O.bodies (-1: not yet)");
         v.attr("shape", shape, "Geometry of the particle");

@@ -1,4 +1,5 @@
 #include <core/BodyContainer.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 namespace yade {
@@ -65,6 +66,7 @@ BodyContainer::id_t BodyContainer::insertAtId(const std::shared_ptr<Body>& b, id
 
 void BodyContainer::erase(id_t id) {
     if (!exists(id)) throw std::out_of_range("Body #" + std::to_string(id) + " does not exist.");
+    if (bodies[id]->isClump()) clumps.erase(std::remove(clumps.begin(), clumps.end(), id), clumps.end());
     detach(*bodies[id]);
     bodies[id]->id = -1;
     bodies[id].reset();
@@ -75,9 +77,45 @@ void BodyContainer::erase(id_t id) {
 void BodyContainer::clear() {
     unbindAll();
     bodies.clear();
+    clumps.clear();
     store->resize(0);
     ++changes;
     store->views.invalidate();
+}
+
+// A loaded scene's clumps agree with their members (a corrupt file is refused before the scene changes).
+void BodyContainer::checkClumps(const std::vector<std::shared_ptr<Body>>& all) {
+    auto fail = [](const std::string& why) { throw std::invalid_argument("inconsistent clump: " + why); };
+    const auto at = [&](id_t id) -> const Body* { return id >= 0 && (size_t)id < all.size() ? all[id].get() : nullptr; };
+    for (size_t i = 0; i < all.size(); ++i) {
+        const Body* b = all[i].get();
+        if (!b) continue;
+        const std::string name = "body #" + std::to_string(i);
+        const bool clumped = (b->state->blockedDOFsMask() & State::clumpedBit) != 0;
+        if (b->clumpId < 0) {
+            if (clumped) fail(name + " is marked as a clump member but belongs to no clump");
+            continue;
+        }
+        if (b->isClump()) {
+            const std::vector<int>* members = b->shape ? b->shape->clumpMembers() : nullptr;
+            if (!members || members->empty()) fail(name + " is a clump without a Clump shape listing its members");
+            std::vector<int> seen;
+            for (int m : *members) {
+                const Body* mb = at(m);
+                if (!mb || m == (int)i || mb->clumpId != (id_t)i) fail(name + " lists member #" + std::to_string(m) + ", which is not its member");
+                seen.push_back(m);
+            }
+            std::sort(seen.begin(), seen.end());
+            if (std::adjacent_find(seen.begin(), seen.end()) != seen.end()) fail(name + " lists a member twice");
+            if (clumped) fail(name + " is a clump marked as a clump member");
+            continue;
+        }
+        const Body* c = at(b->clumpId);
+        const std::vector<int>* members = c && c->isClump() && c->shape ? c->shape->clumpMembers() : nullptr;
+        if (!members || std::find(members->begin(), members->end(), (int)i) == members->end())
+            fail(name + " belongs to clump #" + std::to_string(b->clumpId) + ", which does not list it");
+        if (!clumped) fail(name + " is a clump member not marked as one");
+    }
 }
 
 void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long changeCount) {
@@ -86,12 +124,17 @@ void BodyContainer::restore(std::vector<std::shared_ptr<Body>> all, long long ch
             throw std::invalid_argument("body at position " + std::to_string(i) + " has id " + std::to_string(all[i]->id));
         if (all[i] && !all[i]->state) throw std::invalid_argument("body #" + std::to_string(i) + " has no state");
     }
+    checkClumps(all);
     unbindAll();
     bodies = std::move(all);
     store->resize(0);
     store->resize(bodies.size());
+    clumps.clear();
     for (const auto& b : bodies)
-        if (b) attach(*b);
+        if (b) {
+            attach(*b);
+            if (b->isClump()) clumps.push_back(b->id);
+        }
     changes = changeCount;
     store->views.invalidate();
 }

@@ -30,6 +30,9 @@ public:
     const std::shared_ptr<BodyStore>& hotStore() const { return store; }
     // Incremented by every insert, erase and clear (colliders rebuild their lists when it changes).
     long long changes = 0;
+    // The ids of the clumps (pkg/common/Clump.hpp), ascending: kept by Clump's operations, erase, clear
+    // and restore; empty in scenes without clumps (the integrator then does nothing for them).
+    std::vector<id_t> clumps;
     auto begin() const { return bodies.begin(); }
     auto end() const { return bodies.end(); }
 
@@ -40,6 +43,7 @@ private:
     void detach(Body& b);
     void checkInsertable(const std::shared_ptr<Body>& b) const;
     void unbindAll();
+    static void checkClumps(const std::vector<std::shared_ptr<Body>>& all);
 };
 
 } // namespace yade

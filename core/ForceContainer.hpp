@@ -59,6 +59,10 @@ public:
     // The totals (call sync() first), for loops over all bodies.
     const Vector3r* forceData() const { return force.data(); }
     const Vector3r* torqueData() const { return torque.data(); }
+    // The totals to change in place after sync(), before the integrator reads them (a clump's
+    // members' forces summed into the clump's: pkg/common/Clump.cpp).
+    Vector3r* forceTotals() { return force.data(); }
+    Vector3r* torqueTotals() { return torque.data(); }
     void reset(); // zero the per-step forces; permanent ones are kept
     long long lastReset = -1; // the step in which ForceResetter last ran (NewtonIntegrator.warnNoForceReset)
     bool hasPermanent() const { return anyPermanent; }

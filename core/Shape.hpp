@@ -4,6 +4,8 @@
 
 namespace yade {
 
+class Clump;
+
 class Shape : public Serializable {
 public:
     static constexpr const char* classDoc = "Geometry of a particle (1.2.1), independent of its position and orientation (those are in State).";
@@ -16,6 +18,10 @@ public:
         v.attr("wire", wire, "Render as wire frame");
         v.attr("highlight", highlight, "Highlight this shape in the 3D view");
     }
+    // The shape as a clump's (pkg/common/Clump.hpp), null for the others; members(): a clump's member
+    // ids, null for other shapes or when its lists disagree (checks of O.bodies read it).
+    virtual const Clump* asClump() const { return nullptr; }
+    virtual const std::vector<int>* clumpMembers() const { return nullptr; }
     YADE_INDEXABLE_ROOT(Shape)
 };
 

@@ -14,7 +14,7 @@ public:
     // Degrees of freedom that the integrator leaves untouched (bits of blockedDOFs).
     enum DOF : int { DOF_NONE = 0, DOF_X = 1, DOF_Y = 2, DOF_Z = 4, DOF_RX = 8, DOF_RY = 16, DOF_RZ = 32, DOF_ALL = 63 };
     // Not a degree of freedom: the bit of a clump member, which the integrator leaves to its clump
-    // (core/Clump.hpp); blockedDOFs, dynamic and the laws see only the six bits above.
+    // (pkg/common/Clump.hpp); blockedDOFs, dynamic and the laws see only the six bits above.
     static constexpr int clumpedBit = 64;
     State() = default;
     State(const State& o) : Serializable(o), local(std::make_unique<BodyHot>(o.hot())), angMom(o.angMom), refPos(o.refPos), refOri(o.refOri), densityScaling(o.densityScaling) {}

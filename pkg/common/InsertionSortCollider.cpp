@@ -67,6 +67,10 @@ void InsertionSortCollider::updateBounds() {
     for (long id = 0; id < n; ++id) {
         Body* b = bodies[(Body::id_t)id].get();
         if (!b || !b->shape) continue;
+        if (!b->bounded) {
+            b->bound.reset();
+            continue;
+        }
         BoundFunctor* f = boundDispatcher->getFunctor(*b->shape);
         if (!f) { // no Bo1 functor for this shape: the body takes no part in collisions
             b->bound.reset();

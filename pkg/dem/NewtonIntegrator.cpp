@@ -1,6 +1,7 @@
 #include <core/Scene.hpp>
 #include <lib/base/Lanes.hpp>
 #include <lib/base/ThreadRange.hpp>
+#include <pkg/common/Clump.hpp>
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <lib/base/Logging.hpp>
@@ -345,6 +346,7 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
     Vector3r& statePos = h.pos[id];
     if (st.moveMask != -1 && !(h.mask[id] & st.moveMask)) return true; // bodies outside the mask are not moved
     const int blocked = h.blockedDOFsMask[id];
+    if (__builtin_expect(blocked & State::clumpedBit, 0)) return true; // a clump member: moved with its clump (Clump::moveMembers)
     const bool dynamic = blocked != State::DOF_ALL;
     Vector3r vel = h.vel[id], angVel = h.angVel[id];
     BodyEnergy e; // (added once the new state is known finite)
@@ -626,6 +628,8 @@ static void checkFreshContacts(const Scene& s, const std::vector<Body::id_t>& fr
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     gatherForces(s);
+    const bool clumps = !s.bodies.clumps.empty();
+    if (clumps) Clump::sumForces(s);
     const EnergyTerms ids = energyTerms(s);
     // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
     // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
@@ -654,6 +658,7 @@ void NewtonIntegrator::action() {
     }
     if (steal && st.energy) addChunkEnergies(s, threads, ids);
     if (st.dt > crit.dt) throw StabilityError(diagnose(s, crit.body, "the time step is above the critical one"));
+    if (clumps) Clump::moveMembers(s, st.reference, maxV2, maxMoved2);
     s.motion.publish(motion, maxV2, st.dt, maxMoved2);
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));

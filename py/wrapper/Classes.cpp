@@ -246,11 +246,21 @@ static void bindExtras(py::module_& m) {
                         b.setDynamic(d);
                     },
                     "Whether forces move this body; False blocks all its degrees of freedom (State.blockedDOFs='xyzXYZ') and it keeps its prescribed velocity")
-            .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; })
-            .def_property_readonly("isClump", [](Body& b) { return b.clumpId >= 0 && b.clumpId == b.id; }, "Whether this body is a clump (no clumps yet: False)")
-            .def_property_readonly("isClumpMember", [](Body& b) { return b.clumpId >= 0 && b.clumpId != b.id; }, "Whether this body is a member of a clump")
+            .def_property_readonly("isStandalone", [](Body& b) { return b.clumpId < 0; }, "Whether this body is neither a clump nor a clump's member")
+            .def_property_readonly("isClump", &Body::isClump, "Whether this body is a clump (O.bodies.appendClumped, O.bodies.clump)")
+            .def_property_readonly("isClumpMember", &Body::isClumpMember, "Whether this body is a member of a clump (Body.clumpId is the clump's id)")
             .def_property("groupMask", [](py::object self) { return self.attr("mask"); },
                     [](py::object self, py::object v) { self.attr("mask") = v; }, "Old name of mask");
+
+    existing<Clump, Shape>()
+            .def_property_readonly("members",
+                    [](const Clump& c) {
+                        py::dict d;
+                        for (size_t k = 0; k < c.memberIds.size(); ++k) d[py::int_(c.memberIds[k])] = py::make_tuple(c.relPos[k], c.relOri[k]);
+                        return d;
+                    },
+                    "The members: {id: (position, orientation)} in the clump's frame")
+            .def_property_readonly("ids", [](const Clump& c) { return c.memberIds; }, "Ids of the members (as memberIds)");
 
     existing<Interaction, Serializable>()
             .def_property_readonly("isReal", &Interaction::isReal, "Whether geom and phys exist (a contact, not only overlapping bounds)")

@@ -3,6 +3,7 @@
 #include <core/Functor.hpp>
 #include <core/SceneIO.hpp>
 #include <lib/base/ExternalWrites.hpp>
+#include <pkg/common/Clump.hpp>
 #include <pkg/common/InteractionLoop.hpp>
 #include <core/TimeStepper.hpp>
 #include <lib/base/Logging.hpp>
@@ -177,13 +178,60 @@ struct BodyContainerProxy {
             if (b) l.append(py::cast(b));
         return py::iter(l);
     }
-    bool erase(long id, bool /*eraseClumpMembers: there are no clumps yet, so no members to erase with it*/) {
+    bool erase(long id, bool eraseClumpMembers) {
         BetweenSteps between;
         Scene& s = scene();
         if (id < 0 || id >= (long)s.bodies.size()) throw py::index_error("Body id " + std::to_string(id) + " out of range.");
         if (!s.bodies.exists((Body::id_t)id)) return false; // already erased
-        s.eraseBody((Body::id_t)id);
+        const Body& b = *s.bodies[(Body::id_t)id];
+        if (b.isClumpMember())
+            throw py::value_error("O.bodies.erase: body #" + std::to_string(id) + " is a member of clump #" + std::to_string(b.clumpId)
+                    + "; release it first (O.bodies.releaseFromClump), or erase the clump (eraseClumpMembers=True erases its members too)");
+        if (b.isClump()) Clump::erase(s, (Body::id_t)id, eraseClumpMembers);
+        else s.eraseBody((Body::id_t)id);
         return true;
+    }
+    // --- clumps (pkg/common/Clump.hpp) ---
+    static std::vector<Body::id_t> idList(py::handle arg, const char* what) {
+        if (!py::isinstance<py::sequence>(arg) || py::isinstance<py::str>(arg))
+            throw py::type_error(std::string(what) + ": expected a list of body ids, got " + std::string(py::str(py::type::of(arg).attr("__name__"))));
+        std::vector<Body::id_t> ids;
+        for (py::handle h : arg) {
+            if (!py::isinstance<py::int_>(h) || py::isinstance<py::bool_>(h))
+                throw py::type_error(std::string(what) + ": every item must be a body id (int), got " + std::string(py::str(py::type::of(h).attr("__name__"))));
+            const long id = py::cast<long>(h);
+            if (id < 0 || id > std::numeric_limits<Body::id_t>::max()) throw py::value_error(std::string(what) + ": invalid body id " + std::to_string(id));
+            ids.push_back((Body::id_t)id);
+        }
+        return ids;
+    }
+    py::tuple appendClumped(py::object arg, int discretization) {
+        const std::vector<std::shared_ptr<Body>> bodies = newBodies(arg, "O.bodies.appendClumped");
+        std::vector<const Body*> members;
+        for (const auto& b : bodies) members.push_back(b.get());
+        Clump::checkNewMembers(members, discretization); // (before anything is appended)
+        BetweenSteps between;
+        Scene& s = scene();
+        std::vector<Body::id_t> ids;
+        for (const auto& b : bodies) ids.push_back(s.appendBody(b));
+        const Body::id_t cid = Clump::make(s, ids, discretization);
+        return py::make_tuple(cid, ids);
+    }
+    long clump(py::object arg, int discretization) {
+        const std::vector<Body::id_t> ids = idList(arg, "O.bodies.clump");
+        BetweenSteps between;
+        return Clump::make(scene(), ids, discretization);
+    }
+    void addToClump(py::object arg, long clumpId, int discretization) {
+        const std::vector<Body::id_t> ids = idList(arg, "O.bodies.addToClump");
+        BetweenSteps between;
+        Clump::add(scene(), ids, (Body::id_t)clumpId, discretization);
+    }
+    void releaseFromClump(long id, long clumpId, int discretization) {
+        BetweenSteps between;
+        if (!Clump::release(scene(), (Body::id_t)id, (Body::id_t)clumpId, discretization))
+            PyErr_WarnEx(PyExc_UserWarning, ("Body " + std::to_string(id) + " not released from clump " + std::to_string(clumpId)
+                    + ", because number of clump members would get < 2!").c_str(), 1);
     }
     void clear() {
         BetweenSteps between;
@@ -610,7 +658,18 @@ void bindOmega(py::module_& m) {
             .def("__len__", &BodyContainerProxy::len)
             .def("__iter__", &BodyContainerProxy::iter)
             .def("erase", &BodyContainerProxy::erase, py::arg("id"), py::arg("eraseClumpMembers") = false,
-                    "Remove a body and its interactions; True if it existed (eraseClumpMembers: for a clump, its members too; there are no clumps yet)")
+                    "Remove a body and its interactions; True if it existed. A clump's members become standalone, or are erased with it "
+                    "(eraseClumpMembers=True); a clump member cannot be erased alone (ValueError: release it first)")
+            .def("appendClumped", &BodyContainerProxy::appendClumped, py::arg("bodies"), py::arg("discretization") = 0,
+                    "Append the bodies of the list and make a clump of them (3.5.3); returns (clumpId, [memberIds]). Mass, centroid and "
+                    "inertia are the members' summed (discretization=0: overlaps counted twice, as the reference) or integrated over "
+                    "the union of the member spheres on a grid of discretization cells along the shortest side of their box")
+            .def("clump", &BodyContainerProxy::clump, py::arg("ids"), py::arg("discretization") = 0,
+                    "Make a clump of the standalone bodies with these ids; returns the clump's id")
+            .def("addToClump", &BodyContainerProxy::addToClump, py::arg("bids"), py::arg("cid"), py::arg("discretization") = 0,
+                    "Add standalone bodies (or all members of other clumps, which end) to clump cid; its properties are computed again")
+            .def("releaseFromClump", &BodyContainerProxy::releaseFromClump, py::arg("bid"), py::arg("cid"), py::arg("discretization") = 0,
+                    "Make member bid of clump cid standalone (it keeps its velocity); a clump keeps 2 members at least (warning)")
             .def("replace", &BodyContainerProxy::replace, py::arg("bodies"),
                     "Remove all bodies and interactions, then append the bodies of the list (ids from 0); returns their ids")
             .def("insertAtId", &BodyContainerProxy::insertAtId, py::arg("body"), py::arg("insertatid"),
