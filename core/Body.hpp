@@ -40,6 +40,7 @@ public:
     void setDynamic(bool d) { state->blockedDOFsMask() = (d ? State::DOF_NONE : State::DOF_ALL) | (state->blockedDOFsMask() & State::clumpedBit); }
     bool isClump() const { return clumpId >= 0 && clumpId == id; }
     bool isClumpMember() const { return clumpId >= 0 && clumpId != id; }
+    bool isStandalone() const { return clumpId < 0; }
     // After an attribute was set from Python: a new state of a body in a scene takes over the
     // body's record (the old one keeps its values); the mask is copied into the record.
     void postLoad() override;

@@ -3,6 +3,7 @@
 #include <core/Scene.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -179,6 +180,31 @@ bool Clump::release(Scene& s, Body::id_t id, Body::id_t clumpId, int discretizat
     b.state->blockedDOFsMask() &= ~State::clumpedBit;
     setUp(s, *s.bodies[clumpId], rest, f);
     return true;
+}
+
+Real Clump::roundness(Scene& s, const std::vector<Body::id_t>& excluded) {
+    const std::set<Body::id_t> skip(excluded.begin(), excluded.end());
+    Real sum = 0;
+    long count = 0;
+    for (const auto& b : s.bodies) {
+        if (!b || skip.count(b->id) || b->isClumpMember()) continue;
+        if (b->isStandalone() && dynamic_cast<const Sphere*>(b->shape.get())) {
+            sum += 1;
+            ++count;
+        } else if (b->isClump()) {
+            Real volume = 0, reach = 0;
+            const Vector3r& centroid = b->state->pos();
+            for (Body::id_t m : of(s, b->id).memberIds) {
+                const auto* sphere = dynamic_cast<const Sphere*>(s.bodies[m]->shape.get());
+                if (!sphere) throw std::invalid_argument("getRoundness: member #" + std::to_string(m) + " of clump #" + std::to_string(b->id) + " is not a Sphere");
+                volume += 4. / 3. * M_PI * std::pow(sphere->radius, 3);
+                reach = std::max(reach, (s.bodies[m]->state->pos() - centroid).norm() + sphere->radius);
+            }
+            sum += std::cbrt(3 * volume / (4 * M_PI)) / reach;
+            ++count;
+        }
+    }
+    return count ? sum / count : 0;
 }
 
 void Clump::erase(Scene& s, Body::id_t clumpId, bool eraseMembers) {

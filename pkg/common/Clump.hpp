@@ -44,6 +44,12 @@ public:
     // else integrated on a grid, core/ClumpInertia.hpp), and the members' places in its frame.
     static void updateProperties(Scene& s, Body& clump, int discretization);
 
+    // O.bodies.getRoundness: the mean over standalone spheres (1 each) and clumps of R1/R2, R1 the
+    // radius of a sphere of the members' summed volume, R2 the largest distance of a member's surface
+    // from the centroid (the radius of the sphere about the centroid that holds the clump); the ids
+    // in `excluded` are left out; 0 when nothing is left.
+    static Real roundness(Scene& s, const std::vector<Body::id_t>& excluded);
+
     // --- the integrator's step ---
     // Adds each member's force, and its torque and moment about the centroid, to its clump's.
     static void sumForces(Scene& s);

@@ -227,6 +227,11 @@ struct BodyContainerProxy {
         BetweenSteps between;
         Clump::add(scene(), ids, (Body::id_t)clumpId, discretization);
     }
+    Real getRoundness(py::object excludeList) {
+        const std::vector<Body::id_t> ids = idList(excludeList, "O.bodies.getRoundness");
+        BetweenSteps between;
+        return Clump::roundness(scene(), ids);
+    }
     void releaseFromClump(long id, long clumpId, int discretization) {
         BetweenSteps between;
         if (!Clump::release(scene(), (Body::id_t)id, (Body::id_t)clumpId, discretization))
@@ -668,6 +673,9 @@ void bindOmega(py::module_& m) {
                     "Make a clump of the standalone bodies with these ids; returns the clump's id")
             .def("addToClump", &BodyContainerProxy::addToClump, py::arg("bids"), py::arg("cid"), py::arg("discretization") = 0,
                     "Add standalone bodies (or all members of other clumps, which end) to clump cid; its properties are computed again")
+            .def("getRoundness", &BodyContainerProxy::getRoundness, py::arg("excludeList") = py::list(),
+                    "Mean roundness R1/R2 of the standalone spheres (1) and clumps: R1 the radius of a sphere of the members' volume, R2 "
+                    "the radius of the sphere about the centroid that holds every member; bodies in excludeList are left out (0: none left)")
             .def("releaseFromClump", &BodyContainerProxy::releaseFromClump, py::arg("bid"), py::arg("cid"), py::arg("discretization") = 0,
                     "Make member bid of clump cid standalone (it keeps its velocity); a clump keeps 2 members at least (warning)")
             .def("replace", &BodyContainerProxy::replace, py::arg("bodies"),
