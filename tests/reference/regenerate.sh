@@ -15,3 +15,5 @@ tmp=$(mktemp -d) && python3 tutorial04_copy.py > "$tmp/t.py" && (cd "$tmp" && ya
 yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 's/^PERICONTROLLERS //' > data/peri_controllers.json
 # Peri3dController (tests/test_peri3d.py): one JSON line
 yade -n -x -j1 peri3d.py 2>/dev/null | grep '^PERI3D ' | sed 's/^PERI3D //' > data/peri3d.json
+# clumps on the packing side (tests/test_clump_packing.py): one JSON line
+yade -n -x -j1 clump_packing.py 2>/dev/null | grep '^CLUMPPACK ' | sed 's/^CLUMPPACK //' > data/clump_packing.json
