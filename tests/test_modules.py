@@ -96,8 +96,6 @@ def test_export_text_as_the_reference(tmp_path):
         export.textExt(str(tmp_path / 'x.txt'), format='nonexistent')
     with pytest.raises(RuntimeError):  # (the reference raises RuntimeError)
         export.textExt(str(tmp_path / 'x.txt'), format='nonexistent')
-    with pytest.raises(NotImplementedError, match='Clump'):
-        export.textClumps(str(tmp_path / 'x.txt'))
 
 
 def _materials():
@@ -125,8 +123,6 @@ def test_ymport_spheres_as_the_reference(tmp_path):
         ymport.text(str(tmp_path / 'bad.txt'))
     with pytest.raises(FileNotFoundError):
         ymport.text(str(tmp_path / 'missing.txt'))
-    with pytest.raises(NotImplementedError, match='Clump'):
-        ymport.textClumps(str(tmp_path / 't.txt'))
 
 
 def test_ymport_facets_as_the_reference(tmp_path):

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <lib/base/Logging.hpp>
 #include <pkg/dem/SpherePack.hpp>
 #include <random>
@@ -164,6 +165,15 @@ namespace {
         }
     };
 
+    // Strict overlap (touching is allowed), through the nearest periodic image if periodic.
+    bool overlaps(const Box& box, const Vector3r& c, Real r, const Sph& s) {
+        Vector3r d = s.c - c;
+        if (box.periodic)
+            for (int a = 0; a < 3; a++)
+                if (!box.flat(a)) d[a] -= box.size[a] * std::round(d[a] / box.size[a]);
+        return d.squaredNorm() < (r + s.r) * (r + s.r);
+    }
+
     // Places spheres at random non-overlapping positions in the box, next to those already in `pack`.
     class Cloud {
     public:
@@ -179,7 +189,7 @@ namespace {
             if (!fitsInBox(r)) return false;
             for (int t = 0; t < SpherePack::maxTries; t++) {
                 const Vector3r c = randomCenter(r);
-                if (grid.any(c, r, [&](int id) { return overlaps(c, r, pack[id]); })) continue;
+                if (grid.any(c, r, [&](int id) { return overlaps(box, c, r, pack[id]); })) continue;
                 grid.insert(static_cast<int>(pack.size()), c, r);
                 pack.push_back({ c, r });
                 return true;
@@ -208,14 +218,6 @@ namespace {
                 else c[a] = box.lo[a] + r + unit(rng) * (box.size[a] - 2 * r);
             }
             return c;
-        }
-        // Strict overlap (touching is allowed), through the nearest periodic image if periodic.
-        bool overlaps(const Vector3r& c, Real r, const Sph& s) const {
-            Vector3r d = s.c - c;
-            if (box.periodic)
-                for (int a = 0; a < 3; a++)
-                    if (!box.flat(a)) d[a] -= box.size[a] * std::round(d[a] / box.size[a]);
-            return d.squaredNorm() < (r + s.r) * (r + s.r);
         }
     };
 
@@ -353,6 +355,166 @@ long SpherePack::makeCloud(const Vector3r& minCorner, const Vector3r& maxCorner,
     return static_cast<long>(pack.size());
 }
 
+namespace {
+
+    void requireClumps(bool ok, const std::string& what) {
+        if (!ok) throw std::invalid_argument("SpherePack.makeClumpCloud: " + what);
+    }
+
+    // One clump template: its members and the centre C of their box (members go to c + q·(p + C)).
+    struct Template {
+        std::vector<Sph> members;
+        Vector3r         centre;
+        Real             rMin, rMax;
+    };
+
+    // Refuses a template that fits the box in no orientation: two members i, j (i = j too) need
+    // |Δ_a| + r_i + r_j <= side_a on each axis, so |Δ|² <= Σ_a (side_a - r_i - r_j)², each term at least 0.
+    void checkFits(const std::vector<Sph>& members, const Box& box, std::size_t t) {
+        for (std::size_t i = 0; i < members.size(); i++)
+            for (std::size_t j = i; j < members.size(); j++) {
+                const Real r = members[i].r + members[j].r;
+                Real       room = 0;
+                bool       fits = true;
+                for (int a = 0; a < 3; a++) {
+                    fits = fits && r <= box.size[a];
+                    room += std::pow(std::max<Real>(0, box.size[a] - r), 2);
+                }
+                if (fits && (members[i].c - members[j].c).squaredNorm() <= room * (1 + 1e-9)) continue; // (exact fits pass)
+                throw std::invalid_argument("SpherePack.makeClumpCloud: template " + std::to_string(t) + " cannot fit in the box "
+                        + (i == j ? "(its sphere " + std::to_string(i) + " of diameter " + str(2 * members[i].r) + " is wider than a side)"
+                                  : "in any orientation (its spheres " + std::to_string(i) + " and " + std::to_string(j) + ")"));
+            }
+    }
+
+    std::vector<Template> checkTemplates(const std::vector<SpherePack>& clumps, const Box& box) {
+        requireClumps(!clumps.empty(), "clumps must hold at least one template (a SpherePack of the member spheres)");
+        const Real            side = box.size.minCoeff();
+        std::vector<Template> out;
+        for (std::size_t t = 0; t < clumps.size(); t++) {
+            const SpherePack& c = clumps[t];
+            requireClumps(c.size() > 0, "template " + std::to_string(t) + " has no spheres");
+            Template tpl { c.pack, c.center(), Inf, 0 };
+            for (const Sph& s : c.pack) {
+                tpl.rMin = std::min(tpl.rMin, s.r);
+                tpl.rMax = std::max(tpl.rMax, s.r);
+            }
+            // (the reference tries anyway, and gives up after its tries with a warning and no clump)
+            if (box.periodic)
+                requireClumps(2 * tpl.rMax < side,
+                        "template " + std::to_string(t) + " cannot fit in the periodic cell: its sphere of diameter " + str(2 * tpl.rMax)
+                                + " is not below the cell's smallest side " + str(side));
+            else checkFits(c.pack, box, t);
+            out.push_back(std::move(tpl));
+        }
+        return out;
+    }
+
+    // Draws one random position and orientation per try, in the reference's order: x, y, z, then the
+    // quaternion's z, y, x, w (each in [0, 1), then normalized); places the clump at the first free one.
+    class ClumpPlacer {
+    public:
+        ClumpPlacer(std::vector<Sph>& pack, const Box& box, CloudGrid& grid, std::mt19937& rng)
+                : pack(pack)
+                , box(box)
+                , grid(grid)
+                , rng(rng) { }
+
+        Real draw() { return unit(rng); }
+
+        // Up to maxClumpTries tries; appends the members with clumpId at the first free place.
+        bool place(const Template& tpl, int clumpId) {
+            std::vector<Sph> m(tpl.members.size());
+            for (int t = 0; t < SpherePack::maxClumpTries; t++) {
+                Vector3r c;
+                for (int a = 0; a < 3; a++) c[a] = box.lo[a] + draw() * box.size[a];
+                const Real  z = draw(), y = draw(), x = draw(), w = draw();
+                Quaternionr q(w, x, y, z);
+                q.normalize();
+                for (std::size_t i = 0; i < m.size(); i++) m[i] = { c + q * (tpl.members[i].c + tpl.centre), tpl.members[i].r, clumpId };
+                if (!fits(m)) continue;
+                for (const Sph& s : m) {
+                    grid.insert(static_cast<int>(pack.size()), s.c, s.r);
+                    pack.push_back(s);
+                }
+                return true;
+            }
+            return false;
+        }
+
+    private:
+        std::vector<Sph>&                    pack;
+        const Box&                           box;
+        CloudGrid&                           grid;
+        std::mt19937&                        rng;
+        std::uniform_real_distribution<Real> unit { 0., 1. };
+
+        // No member outside the box (unless periodic) nor overlapping a sphere already placed.
+        bool fits(const std::vector<Sph>& members) const {
+            for (const Sph& s : members) {
+                if (!box.periodic)
+                    for (int a = 0; a < 3; a++)
+                        if (s.c[a] - s.r < box.lo[a] || s.c[a] + s.r > box.lo[a] + box.size[a]) return false;
+                if (grid.any(s.c, s.r, [&](int id) { return overlaps(box, s.c, s.r, pack[id]); })) return false;
+            }
+            return true;
+        }
+    };
+
+} // namespace
+
+long SpherePack::makeClumpCloud(
+        const Vector3r& minCorner, const Vector3r& maxCorner, const std::vector<SpherePack>& clumps, bool periodic, int num, long seed) {
+    requireClumps(isFinite(minCorner) && isFinite(maxCorner), "minCorner and maxCorner must be finite");
+    for (int a = 0; a < 3; a++)
+        requireClumps(maxCorner[a] > minCorner[a],
+                "maxCorner must be above minCorner on every axis, clumps are 3D (axis " + std::to_string(a) + ": " + str(minCorner[a])
+                        + " >= " + str(maxCorner[a]) + ")");
+    const Box                   box { minCorner, maxCorner - minCorner, periodic };
+    const std::vector<Template> templates = checkTemplates(clumps, box);
+    if (periodic) cellSize = box.size;
+
+    Real rMin = Inf, rMax = 0;
+    for (const Template& t : templates) {
+        rMin = std::min(rMin, t.rMin);
+        rMax = std::max(rMax, t.rMax);
+    }
+    int firstId = 0; // (the reference numbers from 0 at each call, so that two calls share ids)
+    for (const Sph& s : pack) firstId = std::max(firstId, s.clumpId + 1);
+    CloudGrid grid(box, gridCell(box, rMin, rMax));
+    for (std::size_t i = 0; i < pack.size(); i++) grid.insert(static_cast<int>(i), pack[i].c, pack[i].r);
+
+    std::mt19937 rng(seed < 0 ? std::random_device {}() : static_cast<unsigned>(seed));
+    ClumpPlacer  placer(pack, box, grid, rng);
+    const int    n      = static_cast<int>(templates.size());
+    long         placed = 0;
+    while (num < 0 || placed < num) {
+        const int t = std::min(n - 1, static_cast<int>(placer.draw() * n));
+        if (!placer.place(templates[t], firstId + static_cast<int>(placed))) break;
+        placed++;
+    }
+    if (num > 0 && placed < num)
+        logWarning("SpherePack.makeClumpCloud: exceeded " + std::to_string(maxClumpTries) + " attempts to place a non-overlapping clump; only "
+                + std::to_string(placed) + " of the " + std::to_string(num) + " clumps were added");
+    return placed;
+}
+
+bool SpherePack::hasClumps() const {
+    return std::any_of(pack.begin(), pack.end(), [](const Sph& s) { return s.clumpId >= 0; });
+}
+
+std::pair<std::vector<int>, std::vector<std::vector<int>>> SpherePack::getClumps() const {
+    std::vector<int>                alone;
+    std::map<int, std::vector<int>> byId;
+    for (std::size_t i = 0; i < pack.size(); i++) {
+        if (pack[i].clumpId < 0) alone.push_back(static_cast<int>(i));
+        else byId[pack[i].clumpId].push_back(static_cast<int>(i));
+    }
+    std::vector<std::vector<int>> clumps;
+    for (auto& kv : byId) clumps.push_back(std::move(kv.second));
+    return { alone, clumps };
+}
+
 void SpherePack::add(const Vector3r& c, Real r) {
     if (!isFinite(c)) throw std::invalid_argument("SpherePack.add: center must be finite");
     if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("SpherePack.add: radius must be positive and finite, got " + str(r));
@@ -429,7 +591,12 @@ void SpherePack::save(const std::string& fileName) const {
     f.imbue(std::locale::classic());
     f << std::setprecision(17);
     if (isPeriodic()) f << "##PERIODIC:: " << cellSize[0] << " " << cellSize[1] << " " << cellSize[2] << "\n";
-    for (const Sph& s : pack) f << s.c[0] << " " << s.c[1] << " " << s.c[2] << " " << s.r << "\n";
+    const bool clumps = hasClumps();
+    for (const Sph& s : pack) {
+        f << s.c[0] << " " << s.c[1] << " " << s.c[2] << " " << s.r;
+        if (clumps) f << " " << s.clumpId;
+        f << "\n";
+    }
     if (!f.flush()) throw FileError("SpherePack.save: error writing '" + fileName + "'", errno, fileName);
 }
 
@@ -449,7 +616,7 @@ namespace {
     }
 } // namespace
 
-// Reads what save() writes, and the reference's files (a 5th column, the clump id, is ignored);
+// Reads what save() writes, and the reference's files (5th column: the clump id, negative for none);
 // '#' lines other than the periodic header are comments. The packing is replaced only if all is read.
 void SpherePack::load(const std::string& fileName) {
     std::ifstream f(fileName);
@@ -470,10 +637,14 @@ void SpherePack::load(const std::string& fileName) {
             loaded.cellSize = Vector3r(x[0], x[1], x[2]);
             continue;
         }
-        if (x.size() != 4 && x.size() != 5) throw std::invalid_argument(where + "expected 'x y z r', got '" + line + "'");
+        if (x.size() != 4 && x.size() != 5) throw std::invalid_argument(where + "expected 'x y z r' or 'x y z r clumpId', got '" + line + "'");
         try {
             loaded.add(Vector3r(x[0], x[1], x[2]), x[3]);
         } catch (const std::invalid_argument& e) { throw std::invalid_argument(where + e.what()); }
+        if (x.size() == 5) {
+            if (!(x[4] == std::floor(x[4]) && std::abs(x[4]) < 1e9)) throw std::invalid_argument(where + "the clump id (5th column) must be an integer");
+            loaded.pack.back().clumpId = x[4] < 0 ? -1 : static_cast<int>(x[4]);
+        }
     }
     if (f.bad()) throw FileError("SpherePack.load: error reading '" + fileName + "'", errno, fileName);
     pack     = std::move(loaded.pack);

@@ -1,4 +1,5 @@
-// yade.pack.SpherePack: the geometric packing of pkg/dem/SpherePack, with Yade's argument names.
+// yade.pack.SpherePack: the geometric packing of pkg/dem/SpherePack, with Yade's argument names. Iteration
+// gives (center, radius) pairs; indexing and toList add the clump id of clump members, as in the reference.
 // toSimulation is added in Python (py/yade/pack.py).
 #include <pkg/dem/SpherePack.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
@@ -9,7 +10,8 @@ namespace py = pybind11;
 namespace yade {
 
 namespace {
-    py::tuple item(const SpherePack::Sph& s) { return py::make_tuple(s.c, s.r); }
+    // (center, radius), or (center, radius, clumpId) for a clump member, as the reference gives them.
+    py::tuple item(const SpherePack::Sph& s) { return s.clumpId >= 0 ? py::make_tuple(s.c, s.r, s.clumpId) : py::make_tuple(s.c, s.r); }
 
     py::list toList(const SpherePack& p) {
         py::list l;
@@ -17,17 +19,38 @@ namespace {
         return l;
     }
 
-    // Replaces the spheres by [(center, radius), ...].
+    // Replaces the spheres by [(center, radius), ...]; an item may add a clump id (negative: none).
     void fromList(SpherePack& p, const py::iterable& spheres) {
         SpherePack loaded;
         int        i = 0;
         for (py::handle h : spheres) {
             const py::sequence s = py::reinterpret_borrow<py::object>(h);
-            if (py::len(s) != 2) throw py::value_error("SpherePack: item " + std::to_string(i) + " must be a (center, radius) pair");
+            if (py::len(s) != 2 && py::len(s) != 3)
+                throw py::value_error("SpherePack: item " + std::to_string(i) + " must be a (center, radius) or (center, radius, clumpId) tuple");
             loaded.add(s[0].cast<Vector3r>(), s[1].cast<Real>());
+            if (py::len(s) == 3) loaded.pack.back().clumpId = std::max(-1, s[2].cast<int>());
             i++;
         }
         p.pack = std::move(loaded.pack);
+    }
+
+    std::string typeName(py::handle h) { return py::str(py::type::of(h).attr("__name__")); }
+
+    // The templates of makeClumpCloud: a list of SpherePack, as the reference takes them.
+    std::vector<SpherePack> clumpTemplates(const py::object& clumps) {
+        if (py::isinstance<SpherePack>(clumps) || py::isinstance<py::str>(clumps) || !py::isinstance<py::sequence>(clumps))
+            throw py::type_error("SpherePack.makeClumpCloud: clumps must be a list of SpherePack (one per kind of clump), got " + typeName(clumps));
+        std::vector<SpherePack> out;
+        int                     i = 0;
+        for (py::handle h : clumps) {
+            if (!py::isinstance<SpherePack>(h))
+                throw py::type_error("SpherePack.makeClumpCloud: clumps[" + std::to_string(i)
+                        + "] must be a SpherePack of the member spheres (centers relative to the clump), got " + typeName(h)
+                        + " (from a utils.clumpTemplate t: SpherePack(list(zip(t.relPositions, t.relRadii))))");
+            out.push_back(h.cast<const SpherePack&>());
+            i++;
+        }
+        return out;
     }
 
     // Iterator over (center, radius) tuples; keeps the packing alive.
@@ -52,7 +75,8 @@ void bindSpherePack(py::module_& m) {
             .def("__iter__", [](Iterator& it) -> Iterator& { return it; })
             .def("__next__", [](Iterator& it) {
                 if (it.i >= it.pack->size()) throw py::stop_iteration();
-                return item(it.pack->pack[it.i++]);
+                const auto& s = it.pack->pack[it.i++];
+                return py::make_tuple(s.c, s.r); // (no clump id, as in the reference)
             });
 
     py::class_<SpherePack>(m, "SpherePack", "Set of spheres (center, radius) without any simulation data; loose random packings with makeCloud.")
@@ -62,7 +86,7 @@ void bindSpherePack(py::module_& m) {
                 fromList(p, l);
                 return p;
             }),
-                    py::arg("list"), "Packing from [((cx,cy,cz),r), ...]")
+                    py::arg("list"), "Packing from [((cx,cy,cz),r), ...]; an item ((cx,cy,cz),r,clumpId) is a clump member")
             .def("makeCloud", &SpherePack::makeCloud, py::arg("minCorner"), py::arg("maxCorner"), py::arg("rMean") = -1., py::arg("rRelFuzz") = 0.,
                     py::arg("num") = -1, py::arg("periodic") = false, py::arg("porosity") = 0.65, py::arg("psdSizes") = std::vector<Real>(),
                     py::arg("psdCumm") = std::vector<Real>(), py::arg("distributeMass") = false, py::arg("seed") = -1,
@@ -73,6 +97,22 @@ void bindSpherePack(py::module_& m) {
                     "deterministic quantiles, placed largest first; without it, random until a sphere cannot be placed in 1000 "
                     "tries. periodic: spheres may cross the box faces (overlaps checked through the periodic images), cellSize "
                     "is set. seed<0: random seed.")
+            .def("makeClumpCloud",
+                    [](SpherePack& p, const Vector3r& lo, const Vector3r& hi, const py::object& clumps, bool periodic, int num, long seed) {
+                        return p.makeClumpCloud(lo, hi, clumpTemplates(clumps), periodic, num, seed);
+                    },
+                    py::arg("minCorner"), py::arg("maxCorner"), py::arg("clumps"), py::arg("periodic") = false, py::arg("num") = -1,
+                    py::arg("seed") = -1,
+                    "Random loose cloud of non-overlapping clumps in the box [minCorner, maxCorner], appended to the packing; "
+                    "returns the number of clumps placed. clumps: a list of SpherePack, each the member spheres of one kind of "
+                    "clump in its own frame, e.g. [SpherePack([((0,0,0),1e-2),((1e-2,0,0),1e-2)])]; each clump takes one at "
+                    "random, then a random position and orientation (at most 200 tries). The members carry their clump id "
+                    "(toList, getClumps, save) and toSimulation makes them clumps. periodic, num, seed: as in makeCloud "
+                    "(num<0: as many as fit).")
+            .def("getClumps", [](const SpherePack& p) { auto c = p.getClumps(); return py::make_tuple(py::cast(c.first), py::cast(c.second)); },
+                    "(standalones, [clump1, clump2, ...]): the indices of the spheres in no clump, and of the members of each "
+                    "clump, by increasing clump id")
+            .def("hasClumps", &SpherePack::hasClumps, "Whether some sphere belongs to a clump")
             .def("add", &SpherePack::add, py::arg("center"), py::arg("radius"), "Append one sphere")
             .def("aabb", [](const SpherePack& p) { auto b = p.aabb(); return py::make_tuple(b.first, b.second); },
                     "(min, max) corners of the box around the spheres, radii included")
@@ -85,10 +125,11 @@ void bindSpherePack(py::module_& m) {
                     py::arg("bins") = 50, py::arg("mass") = true,
                     "Particle size distribution: (diameters, cumulative fractions), bins+1 values each; fractions of mass (volume) "
                     "or of number")
-            .def("save", &SpherePack::save, py::arg("fileName"), "Write as text: 'x y z r' per line (after '##PERIODIC:: sx sy sz' if periodic)")
+            .def("save", &SpherePack::save, py::arg("fileName"), "Write as text: 'x y z r' per line, 'x y z r clumpId' (-1: no clump) if the packing has clumps, after "
+                    "'##PERIODIC:: sx sy sz' if periodic")
             .def("load", &SpherePack::load, py::arg("fileName"), "Replace the spheres by those of a file written by save() (or by Yade)")
-            .def("toList", &toList, "[(center, radius), ...]")
-            .def("fromList", &fromList, py::arg("list"), "Replace the spheres by [(center, radius), ...]")
+            .def("toList", &toList, "[(center, radius), ...], (center, radius, clumpId) for clump members")
+            .def("fromList", &fromList, py::arg("list"), "Replace the spheres by [(center, radius), ...]; an item (center, radius, clumpId) is a clump member")
             .def_readwrite("cellSize", &SpherePack::cellSize, "Size of the periodic cell; zero if not periodic")
             .def_property_readonly("isPeriodic", &SpherePack::isPeriodic, "Whether cellSize is set")
             .def_readonly("appliedPsdScaling", &SpherePack::appliedPsdScaling, "Factor applied to psdSizes by the last makeCloud with psd and num")

@@ -1,5 +1,6 @@
-"""Writing the spheres of the scene to text files (as in Yade's yade.export): text (x y z r per line)
-and textExt (a choice of formats, read back by yade.ymport.textExt)."""
+"""Writing the spheres of the scene to text files (as in Yade's yade.export): text (x y z r per line),
+textExt (a choice of formats, read back by yade.ymport.textExt) and textClumps (clump members with
+their clump's id, read back by yade.ymport.textClumps)."""
 from ._yade import O, _sphereColumns
 
 __all__ = ['text', 'textExt', 'textClumps']
@@ -66,5 +67,22 @@ def text(filename, mask=-1):
 
 
 def textClumps(filename, format='x_y_z_r_clumpId', comment='', mask=-1):
-    """Clump members to a text file: not possible, this engine has no Clump yet."""
-    raise NotImplementedError('export.textClumps: this engine has no Clump class yet, so there are no clumps to write')
+    """Write the spherical members of the clumps (whose mask shares a bit with `mask`; other bodies
+    are skipped) to `filename`, clump after clump by increasing clump id, one line 'x y z r clumpId'
+    per member (tab-separated, C's %g), the id being the clump body's. The first line is
+    '#format x_y_z_r_clumpId', then '# <comment>' if given; ymport.textClumps reads it back.
+    Returns (number of clumps in the scene, number of spheres written), as the reference does."""
+    if format != 'x_y_z_r_clumpId':
+        raise ExportFormatError("export.textClumps: unknown format %r; the only one is 'x_y_z_r_clumpId'" % (format,))
+    ids, pos, radius, _ = _sphereColumns(mask)
+    members = {}  # clump id -> rows of its members
+    for i in range(len(ids)):
+        b = O.bodies[int(ids[i])]
+        if b.isClumpMember:
+            members.setdefault(b.clumpId, []).append(i)
+    lines = ['#format x_y_z_r_clumpId\n'] + (['# ' + comment + '\n'] if comment else [])
+    for c in sorted(members):
+        lines += ['\t'.join([_g(pos[i, 0]), _g(pos[i, 1]), _g(pos[i, 2]), _g(radius[i]), '%d' % c]) + '\n' for i in members[c]]
+    with open(filename, 'w') as f:
+        f.writelines(lines)
+    return sum(1 for b in O.bodies if b.isClump), sum(len(m) for m in members.values())

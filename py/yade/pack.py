@@ -1,5 +1,5 @@
-"""Sphere packings, as in yade.pack: SpherePack (geometry only: centers and radii) and its makeCloud
-loose random packing; volume predicates (inSphere, inCylinder... and their boolean operations,
+"""Sphere packings, as in yade.pack: SpherePack (geometry only: centers, radii and clump ids) and its
+makeCloud and makeClumpCloud loose random packings; volume predicates (inSphere, inCylinder... and their boolean operations,
 yade._packPredicates) and the regular packings that fill them (regularOrtho, regularHexa), and
 filterSpherePack.
 
@@ -30,14 +30,20 @@ def _periodicCell(sp):
 
 def SpherePack_toSimulation(self, rot=None, **kw):
     """Add the spheres to the simulation as bodies made by utils.sphere(center, radius, **kw), in one
-    O.bodies.append call; returns the list of their ids. rot (a Quaternion or a rotation Matrix3)
-    turns the packing about the origin first. A periodic packing also sets the periodic cell."""
+    O.bodies.append call, then (a packing with clump ids, as makeClumpCloud makes) one clump of the
+    members of each clump by O.bodies.clump, by increasing clump id; returns the list of the ids of
+    the spheres, then of the clumps (the reference's numbering). rot (a Quaternion or a rotation
+    Matrix3) turns the packing about the origin first. A periodic packing also sets the periodic cell."""
     if rot is not None and not isinstance(rot, (Quaternion, Matrix3)):
         raise TypeError('SpherePack.toSimulation: rot must be a Quaternion or a Matrix3, got %s' % type(rot).__name__)
+    clumps = self.getClumps()[1]
+    if clumps and not hasattr(O.bodies, 'clump'):
+        raise NotImplementedError('SpherePack.toSimulation: the packing has clumps, and this build has no O.bodies.clump yet')
     if self.isPeriodic:
         _periodicCell(self)
     turn = (lambda c: c) if rot is None else (lambda c: rot * Vector3(c))
-    return O.bodies.append([utils.sphere(turn(c), r, **kw) for c, r in self])
+    ids = O.bodies.append([utils.sphere(turn(c), r, **kw) for c, r in self])
+    return ids + [O.bodies.clump([ids[i] for i in members]) for members in clumps]
 
 
 SpherePack.toSimulation = SpherePack_toSimulation

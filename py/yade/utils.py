@@ -1,5 +1,6 @@
 """Helpers to build scenes, as in yade.utils: sphere(), default material, ..."""
 import math
+import numbers
 import random
 
 from ._yade import O, Body, Sphere, Facet, Wall, Box, Aabb, State, FrictMat, Material, Vector3, Quaternion
@@ -1232,3 +1233,32 @@ defaultEngines = _defaultEngines()
 __all__ += ['totalForceInVolume', 'bodyNumInteractionsHistogram', 'interactionAnglesHistogram', 'coordsAndDisplacements',
             'approxSectionArea', 'pointInsidePolygon', 'spiralProject', 'setNewVerticesOfFacet', 'vmData', 'voxelPorosity',
             'defaultEngines', 'TableParamReader']
+
+
+class clumpTemplate:
+    """A clump's shape for O.bodies.replaceByClumps: the radii and positions of its members relative
+    to the sphere it replaces (the reference's class: numCM is the number of members; the lists are
+    kept as given). Both lists must have the same length, at least 2; here the radii must also be
+    positive and finite, and each position 3 finite numbers (the reference accepts any values)."""
+
+    def __init__(self, relRadii=[], relPositions=[[], []]):
+        if len(relRadii) != len(relPositions):
+            raise ValueError('Given lists must have same length! Given lists does not match clump template structure.')
+        if len(relRadii) < 2:
+            raise ValueError('One or more of given lists for relative radii have length < 2! Given lists does not match clump template structure.')
+        for i, r in enumerate(relRadii):
+            if not (isinstance(r, numbers.Real) and not isinstance(r, bool) and math.isfinite(r) and r > 0):
+                raise ValueError('clumpTemplate: relRadii[%d] must be a positive finite number, got %r' % (i, r))
+        for i, p in enumerate(relPositions):
+            try:
+                ok = len(p) == 3 and all(math.isfinite(float(x)) for x in p)
+            except (TypeError, ValueError):
+                ok = False
+            if not ok:
+                raise ValueError('clumpTemplate: relPositions[%d] must be 3 finite numbers, got %r' % (i, p))
+        self.numCM = len(relRadii)
+        self.relRadii = relRadii
+        self.relPositions = relPositions
+
+
+__all__ += ['clumpTemplate']

@@ -1,9 +1,9 @@
 """Reading bodies from files (as in Yade's yade.ymport): spheres from text files (text, textExt),
 facets from text files (textFacets) and from STL surfaces (stl, ASCII or binary). Each function
-returns a list of bodies to give to O.bodies.append()."""
+returns a list of bodies to give to O.bodies.append(), except textClumps, which adds its clumps itself."""
 import struct
 
-from ._yade import Quaternion, Vector3
+from ._yade import O, Quaternion, Vector3
 from . import utils
 
 __all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh', 'blockMeshDict', 'polyMesh']
@@ -70,9 +70,28 @@ def text(filename, shift=Vector3.Zero, scale=1.0, **kw):
     return textExt(filename, format='x_y_z_r', shift=shift, scale=scale, **kw)
 
 
-def textClumps(filename, shift=Vector3.Zero, discretization=0, orientation=[], scale=1.0, **kw):
-    """Clumps from a text file: not possible, this engine has no Clump class yet."""
-    raise NotImplementedError('ymport.textClumps: this engine has no Clump class yet, so clumps cannot be made')
+def textClumps(fileName, shift=Vector3.Zero, discretization=0, orientation=Quaternion.Identity, scale=1.0, **kw):
+    """Clumps from a text file of lines 'x y z r clumpId' (as export.textClumps writes them): each run
+    of consecutive lines with the same clumpId becomes one clump, added to the simulation by
+    O.bodies.appendClumped(spheres, discretization=discretization), the spheres made by
+    utils.sphere(shift + orientation·(scale·(x, y, z)), scale·r, **kw). Lines starting with # are
+    skipped. Returns the list of what appendClumped returned: [(clumpId, [memberIds]), ...]."""
+    if not hasattr(O.bodies, 'appendClumped'):
+        raise NotImplementedError('ymport.textClumps: this build has no O.bodies.appendClumped yet, so clumps cannot be made')
+    if not isinstance(orientation, Quaternion):
+        raise TypeError('ymport.textClumps: orientation must be a Quaternion, got %s' % type(orientation).__name__)
+    shift = Vector3(shift)
+    groups, last = [], None
+    for n, fields in _rows(fileName)[0]:
+        if len(fields) < 5:
+            raise ImportFormatError('%s:%d: a clump member needs 5 columns (x y z r clumpId), the line has %d' % (fileName, n, len(fields)))
+        x, y, z, r, clump = _numbers(fileName, n, fields, 5, 'a clump member')
+        if not groups or clump != last:
+            groups.append([])
+        groups[-1].append((Vector3(x, y, z), r))
+        last = clump
+    return [O.bodies.appendClumped([utils.sphere(shift + orientation * (scale * c), scale * r, **kw) for c, r in g],
+                                   discretization=discretization) for g in groups]
 
 
 _facetFormats = ('x1_y1_z1_x2_y2_z2_x3_y3_z3', 'x1_y1_z1_x2_y2_z2_x3_y3_z3_matId', 'id_x1_y1_z1_x2_y2_z2_x3_y3_z3_matId',

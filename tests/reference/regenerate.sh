@@ -17,3 +17,5 @@ yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 
 yade -n -x -j1 peri3d.py 2>/dev/null | grep '^PERI3D ' | sed 's/^PERI3D //' > data/peri3d.json
 # clumps (tests/test_clump.py): one JSON line
 yade -n -x -j1 clump.py 2>/dev/null | grep '^CLUMP ' | sed 's/^CLUMP //' > data/clump.json
+# clumps on the packing side (tests/test_clump_packing.py): one JSON line
+yade -n -x -j1 clump_packing.py 2>/dev/null | grep '^CLUMPPACK ' | sed 's/^CLUMPPACK //' > data/clump_packing.json
