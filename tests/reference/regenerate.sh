@@ -15,3 +15,5 @@ tmp=$(mktemp -d) && python3 tutorial04_copy.py > "$tmp/t.py" && (cd "$tmp" && ya
 yade -n -x -j1 peri_controllers.py 2>/dev/null | grep '^PERICONTROLLERS ' | sed 's/^PERICONTROLLERS //' > data/peri_controllers.json
 # Peri3dController (tests/test_peri3d.py): one JSON line
 yade -n -x -j1 peri3d.py 2>/dev/null | grep '^PERI3D ' | sed 's/^PERI3D //' > data/peri3d.json
+# aspherical rotation, Fincham's scheme (tests/test_aspherical_rotation.py): one JSON line
+yade -n -x -j1 aspherical.py 2>/dev/null | grep '^ASPHERICAL ' | sed 's/^ASPHERICAL //' > data/aspherical.json
