@@ -238,6 +238,8 @@ static inline bool isAspherical(const IntegratorStep& st, const Vector3r& inerti
     return __builtin_expect(unequalMoments(inertia), 0) && st.aspherical && !(blocked & allRotations) && (inertia.array() > 0).all();
 }
 
+// (The spin found from the momentum is the body's spin at the step's time; the damping reads the stored one, as
+// the reference does: a body given only angMom is not damped in its first step.)
 static inline void spinFromMomentum(const IntegratorStep& st, long id, const Vector3r& inertia, Vector3r& angVel, AsphericalUpdate& a) {
     a.angMom = &(*st.scene).bodies[id]->state->angMom;
     a.dampSpin = angVel;
