@@ -183,6 +183,8 @@ class Filler:
         if isinstance(val, str):
             if name == 'algo':  # MatchMaker: one of its names
                 return ['harmAvg']
+            if name == 'rotAlgorithm':  # NewtonIntegrator: one of its schemes
+                return ['Omelyan1998']
             if name == 'label':
                 label = 'rt%d_label' % k
                 return [label]

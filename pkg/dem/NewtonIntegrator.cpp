@@ -4,6 +4,7 @@
 #include <pkg/common/Clump.hpp>
 #include <pkg/dem/CriticalTimeStep.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
+#include <pkg/dem/AsphericalRotation.hpp>
 #include <lib/base/Logging.hpp>
 #include <cstdint>
 #include <cstring>
@@ -23,20 +24,10 @@ static inline Vector3r accelOf(const Vector3r& f, const Vector3r& m, int blocked
     return a;
 }
 
-// sin(x)/x and cos(x) for x = angle/2. Rotations per step are small: for x below 1e-2 the Taylor
-// series to x⁶ and x⁸ (truncation below 1e-21 relative) replaces the library calls (within an ulp).
-// The coefficients are products by constants, not quotients, and the caller needs sin(x)/x, not
-// sin(x) (then divided by |ω|): the divisions in a chain made the integrator wait on them.
-static inline void sincCosHalf(Real angle, Real& sinc, Real& c) {
-    const Real x = 0.5 * angle, x2 = x * x;
-    if (x2 < 1e-4) {
-        sinc = 1 - x2 * (1. / 6) * (1 - x2 * (1. / 20) * (1 - x2 * (1. / 42)));
-        c = 1 - x2 * 0.5 * (1 - x2 * (1. / 12) * (1 - x2 * (1. / 30) * (1 - x2 * (1. / 56))));
-    } else {
-        sinc = std::sin(x) / x;
-        c = std::cos(x);
-    }
-}
+// sin(x)/x and cos(x) for x = angle/2 (AsphericalRotation.hpp). The coefficients are products by constants,
+// not quotients, and the caller needs sin(x)/x, not sin(x) (then divided by |ω|): the divisions in a chain
+// made the integrator wait on them.
+using aspherical::sincCosHalf;
 
 static constexpr int allRotations = State::DOF_RX | State::DOF_RY | State::DOF_RZ;
 
@@ -104,28 +95,6 @@ static void turnSpheres(const BodyStore::Columns& h, const char* spins, long b0,
     }
 }
 
-// Euler's equations (3.5.10) in the body's principal frame: the angular acceleration of the spin w
-// under the torque t, I the principal moments of inertia.
-static inline Vector3r eulerAccel(const Vector3r& w, const Vector3r& t, const Vector3r& I) {
-    return Vector3r((t[0] - (I[2] - I[1]) * w[1] * w[2]) / I[0], (t[1] - (I[0] - I[2]) * w[2] * w[0]) / I[1],
-            (t[2] - (I[1] - I[0]) * w[0] * w[1]) / I[2]);
-}
-
-// The rotation of an aspherical body over one step, the manual's SPIRAL scheme (3.5.2, delValle2023):
-// the spin in the body's frame w (in: the last step's, out: the new one) from three estimates of
-// Euler's equations with the torque t held over the step, then the orientation turned by the new
-// spin in the body's frame, q·(cos θ, ŵ sin θ), θ = |w|·dt/2.
-static inline Quaternionr spiralStep(const Quaternionr& q, Vector3r& w, const Vector3r& t, const Vector3r& I, Real dt) {
-    const Vector3r k1 = dt * eulerAccel(w, t, I);
-    const Vector3r k2 = dt * eulerAccel(w + k1, t, I);
-    const Vector3r k3 = dt * eulerAccel(w + 0.25 * (k1 + k2), t, I);
-    w += (k1 + k2 + 4 * k3) / 6;
-    Real sincHalf, cosHalf;
-    sincCosHalf(w.norm() * dt, sincHalf, cosHalf);
-    const Real k = sincHalf * (0.5 * dt);
-    return q * Quaternionr(cosHalf, k * w[0], k * w[1], k * w[2]);
-}
-
 // Whether the principal moments differ (by their bits: one test for the spheres, instead of three
 // floating-point comparisons in the integrator's loop).
 static inline bool unequalMoments(const Vector3r& I) {
@@ -136,26 +105,27 @@ static inline bool unequalMoments(const Vector3r& I) {
     return ((a ^ b) | (b ^ c)) != 0;
 }
 
-// One step of an aspherical body's rotation (spiralStep), out of the integrator's loop (few bodies take it):
-// the new orientation and spin, the rotational kinetic energy at mid-step and the power of the damping
-// torque (for O.energy). lambda: the damping (0: none).
+// One step of an aspherical body's rotation by the chosen scheme (AsphericalRotation.hpp), out of the
+// integrator's loop (few bodies take it): the new orientation, spin and angular momentum, the rotational
+// kinetic energy on-step and the power of the damping torque (for O.energy). The damping (3.5.12) acts on
+// the torque in the global frame, by the sign of each component of torque·spin, the spin being the last
+// step's (dampSpin: the stored State.angVel), as in the reference. lambda: the damping (0: none).
 struct AsphericalTurn {
-    Quaternionr ori;
-    Vector3r angVel;
-    Real kinetic, dampingPower;
+    aspherical::Turn turn;
+    Real dampingPower;
 };
-static __attribute__((noinline)) AsphericalTurn turnAspherical(
-        const Quaternionr& q, const Vector3r& angVel, const Vector3r& torque, const Vector3r& I, Real dt, Real lambda) {
+static __attribute__((noinline)) AsphericalTurn turnAspherical(aspherical::Scheme scheme, bool normalize, const Quaternionr& q,
+        const Vector3r& angVel, const Vector3r& angMom, const Vector3r& dampSpin, const Vector3r& torque, const Vector3r& I, Real dt,
+        Real lambda) {
     Vector3r damped = torque;
-    if (lambda != 0) NewtonIntegrator::damp(damped, angVel, 0, lambda); // (the sign of each component of torque·angVel)
-    const Vector3r before = q.conjugate() * angVel; // the spin in the body's frame
-    Vector3r after = before;
+    if (lambda != 0) NewtonIntegrator::damp(damped, dampSpin, 0, lambda); // (the sign of each component of torque·spin)
     AsphericalTurn t;
-    t.ori = spiralStep(q, after, q.conjugate() * damped, I, dt);
-    t.angVel = t.ori * after;
-    const Vector3r mid = 0.5 * (before + after);
-    t.kinetic = 0.5 * mid.dot(I.cwiseProduct(mid));
-    t.dampingPower = (damped - torque).dot(0.5 * (angVel + t.angVel));
+    switch (scheme) {
+        case aspherical::Scheme::fincham: t.turn = aspherical::fincham(q, angMom, damped, I, dt); break;
+        case aspherical::Scheme::omelyan: t.turn = aspherical::omelyan(q, angVel, damped, I, dt, normalize); break;
+        default: t.turn = aspherical::spiral(q, angVel, damped, I, dt, normalize);
+    }
+    t.dampingPower = (damped - torque).dot(0.5 * (angVel + t.turn.angVel));
     return t;
 }
 
@@ -176,6 +146,8 @@ struct IntegratorStep {
     Real dt, lambda; // lambda: the damping
     Vector3r g;
     bool gravityDamped, aspherical, energy, split;
+    aspherical::Scheme rotScheme; // NewtonIntegrator.rotAlgorithm
+    bool normalizeOri;            // whether SPIRAL and Omelyan normalize the orientation in this step (normalizeEvery)
     int moveMask;
     BodyStore::Columns h;
     const Vector3r* F;         // the force and torque totals
@@ -203,6 +175,7 @@ struct AsphericalUpdate {
     bool turned = false;
     Vector3r* angMom = nullptr; // (its State.angMom, and the new value)
     Vector3r newAngMom = Vector3r::Zero();
+    Vector3r dampSpin = Vector3r::Zero(); // the stored spin, whose sign the damping reads
 };
 
 // Translation (3.5.1): the acceleration of the gathered force on the free translations, with gravity
@@ -240,9 +213,9 @@ static inline void energyOfAspherical(const IntegratorStep& st, Real mass, const
     const Real trans = 0.5 * mass * v.squaredNorm();
     if (st.split) {
         e.kin = trans;
-        e.kinRot = t.kinetic;
+        e.kinRot = t.turn.kinetic;
     } else
-        e.kin = trans + t.kinetic;
+        e.kin = trans + t.turn.kinetic;
     e.damp = -st.dt * (mass * (accel - undamped).dot(v) + t.dampingPower);
 }
 
@@ -258,30 +231,34 @@ static inline void rotateSphere(const IntegratorStep& st, long id, Real mass, co
     angVel += st.dt * angAccel;
 }
 
-// Unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2), the
-// state being the angular momentum State.angMom (global frame), as in the reference: the spin is
-// found from it (a spin set alone is overwritten), and it is kept up to date after the turn.
+// Unequal principal moments and free rotations: Euler's equations in the body's frame (3.5.2) by the scheme
+// NewtonIntegrator.rotAlgorithm chooses. Fincham's (the default) is driven by the angular momentum
+// State.angMom (global frame), as in the reference: the spin is found from it (a spin set alone is
+// overwritten); SPIRAL and Omelyan are driven by the spin State.angVel, angMom following it.
 static inline bool isAspherical(const IntegratorStep& st, const Vector3r& inertia, int blocked) {
     return __builtin_expect(unequalMoments(inertia), 0) && st.aspherical && !(blocked & allRotations) && (inertia.array() > 0).all();
 }
 
+// (The spin found from the momentum is the body's spin at the step's time; the damping reads the stored one, as
+// the reference does: a body given only angMom is not damped in its first step.)
 static inline void spinFromMomentum(const IntegratorStep& st, long id, const Vector3r& inertia, Vector3r& angVel, AsphericalUpdate& a) {
     a.angMom = &(*st.scene).bodies[id]->state->angMom;
+    a.dampSpin = angVel;
+    if (st.rotScheme != aspherical::Scheme::fincham) return;
     const Quaternionr& q = st.h.ori[id];
     angVel = q * (q.conjugate() * *a.angMom).cwiseQuotient(inertia);
 }
 
 static inline void rotateAspherical(const IntegratorStep& st, long id, Real mass, const Vector3r& inertia, bool damped, const Vector3r& gFree,
         const Vector3r& vel, const Vector3r& accel, const Vector3r& undamped, Vector3r& angVel, BodyEnergy& e, AsphericalUpdate& a) {
-    const AsphericalTurn t = turnAspherical(st.h.ori[id], angVel, st.T[id], inertia, st.dt, damped ? st.lambda : 0);
-    a.ori = t.ori;
+    const AsphericalTurn t = turnAspherical(st.rotScheme, st.normalizeOri, st.h.ori[id], angVel, *a.angMom, a.dampSpin, st.T[id], inertia,
+            st.dt, damped ? st.lambda : 0);
+    a.ori = t.turn.ori;
     a.turned = true;
-    // the momentum of the new (mid-step) spin at the new orientation: the next step finds that spin
-    // from it again (so a run goes as when the spin itself was the state: second order in dt)
-    a.newAngMom = t.ori * inertia.cwiseProduct(t.ori.conjugate() * t.angVel);
+    a.newAngMom = t.turn.angMom;
     if (!std::isfinite(a.ori.coeffs().sum())) e.kinRot = NaN; // (caught by the guard)
     if (st.energy) energyOfAspherical(st, mass, gFree, vel, accel, undamped, t, e);
-    angVel = t.angVel;
+    angVel = t.turn.angVel;
 }
 
 // m·v, each row's terms summed left to right (as Eigen's product of a 3×3 matrix sums them), for one
@@ -372,8 +349,8 @@ static inline bool integrateBody(const IntegratorStep& st, long id, BodyEnergy& 
         any = true;
     }
     maxV2 = std::max(maxV2, vel.squaredNorm());
-    if (__builtin_expect(a.turned, 0)) // an aspherical body: its new orientation (of unit length: no more than rounding off)
-        h.ori[id] = a.ori.normalized();
+    if (__builtin_expect(a.turned, 0)) // an aspherical body: its new orientation (normalized as its scheme says: normalizeEvery)
+        h.ori[id] = a.ori;
     else // (turned by turnSpheres: 1, or 2 for a body whose rotations are all blocked: it turns only as an engine prescribes)
         st.spins[id] = (blocked & allRotations) == allRotations ? 2 : 1;
     return true;
@@ -594,6 +571,8 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write
     st.g = gravity;
     st.gravityDamped = dampGravity;
     st.aspherical = exactAsphericalRot;
+    st.rotScheme = aspherical::schemeOf(rotAlgorithm);
+    st.normalizeOri = normalizeEvery > 0 && s.iter % normalizeEvery == 0;
     st.energy = s.trackEnergy;
     st.split = st.energy && kinSplit;
     st.moveMask = mask;
@@ -663,6 +642,8 @@ void NewtonIntegrator::action() {
     maxVelocitySq = maxV2;
     if (diverged >= 0) throw StabilityError(diagnose(s, (Body::id_t)diverged, "its new position or velocity is not finite, or its orientation is not a finite non-zero quaternion"));
 }
+
+void NewtonIntegrator::postLoad() { aspherical::schemeOf(rotAlgorithm); }
 
 std::string NewtonIntegrator::diagnose(const Scene& s, Body::id_t id, const std::string& what) const {
     const CriticalStep crit = criticalTimeStep(s);

@@ -1,5 +1,6 @@
 // Integrates the motion of every body from its forces (3.5): leapfrog for positions (3.5.1),
-// orientation update (3.5.2: spherical, or SPIRAL for aspherical bodies), adapted Cundall damping (3.5.12).
+// orientation update (3.5.2: spherical, or one of three schemes for aspherical bodies: AsphericalRotation.hpp),
+// adapted Cundall damping (3.5.12).
 #pragma once
 #include <core/MotionRecord.hpp>
 #include <core/Engine.hpp>
@@ -9,6 +10,7 @@
 #include <memory>
 #include <vector>
 #include <stdexcept>
+#include <string>
 
 namespace yade {
 
@@ -22,7 +24,7 @@ struct StabilityError : std::runtime_error {
 
 class NewtonIntegrator : public GlobalEngine {
 public:
-    static constexpr const char* classDoc = "Engine integrating the motion of every body from its forces (3.5): leapfrog positions (3.5.1), orientation update (3.5.2: spherical, or Euler's equations by the SPIRAL scheme for aspherical bodies), Cundall's non-viscous damping (3.5.12) and gravity.";
+    static constexpr const char* classDoc = "Engine integrating the motion of every body from its forces (3.5): leapfrog positions (3.5.1), orientation update (3.5.2: spherical, or Euler's equations for aspherical bodies by the scheme rotAlgorithm chooses), Cundall's non-viscous damping (3.5.12) and gravity.";
     Real damping = 0.2;
     Vector3r gravity = Vector3r::Zero();
     bool dampGravity = true;
@@ -30,6 +32,8 @@ public:
     int mask = -1;
     int stabilityCheckPeriod = 100;
     bool exactAsphericalRot = true, kinSplit = false, warnNoForceReset = true;
+    std::string rotAlgorithm = "Fincham1992";
+    int normalizeEvery = 1;
     template <class V> void visit(V& v) {
         GlobalEngine::visit(v);
         v.attr("damping", damping, "Numerical damping coefficient λd of (3.5.12), in [0,1)", Attr::nonNegative);
@@ -40,11 +44,17 @@ public:
         v.attr("stabilityCheckPeriod", stabilityCheckPeriod,
                 "Every this many steps (and when O.dt changes, and for bodies with a new contact every step), stop with StabilityError if O.dt exceeds the contacts' critical step (0: only the check for non-finite states, done every step)");
         v.attr("exactAsphericalRot", exactAsphericalRot,
-                "Integrate the rotation of aspherical bodies (unequal principal moments of inertia, free rotations) with Euler's equations in their principal frame, the manual's SPIRAL scheme (3.5.2); False: the spherical update (3.5.9) for every body");
+                "Integrate the rotation of aspherical bodies (unequal principal moments of inertia, free rotations) with Euler's equations in their principal frame by the scheme rotAlgorithm chooses (3.5.2); False: the spherical update (3.5.9) for every body");
+        v.attr("rotAlgorithm", rotAlgorithm,
+                "The scheme that turns aspherical bodies (exactAsphericalRot, 3.5.2): 'Fincham1992' ([Fincham1992], second order, driven by State.angMom: the scheme and the results of the reference 2023.02a, hence the default here), 'delValle2023' (SPIRAL, the manual's default, driven by State.angVel) or 'Omelyan1998' (driven by State.angVel)");
+        v.attr("normalizeEvery", normalizeEvery,
+                "SPIRAL and Omelyan keep the orientation's norm: it is normalized every this many steps only (1: every step; 0: never). Fincham normalizes every step.",
+                Attr::nonNegative);
         v.attr("kinSplit", kinSplit, "Track the kinetic energy as two terms, translational (kinTrans) and rotational (kinRot), instead of kinetic");
         v.attr("warnNoForceReset", warnNoForceReset, "Warn when O.forces were not reset in the current step (no ForceResetter in O.engines before this engine)");
     }
     void action() override;
+    void postLoad() override; // (a rotAlgorithm that is not a scheme: ValueError naming the choices)
 
 private:
     Real lastCheckedDt = NaN;

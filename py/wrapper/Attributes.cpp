@@ -208,7 +208,9 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
         case AttrKind::Quaternionr: {
             Quaternionr q = castOr<Quaternionr>(v, where, expected);
             if (!allFinite(q.coeffs().data(), 4) || q.norm() == 0) throw py::value_error(where + " must be a finite non-zero quaternion");
-            *static_cast<Quaternionr*>(p) = q.normalized();
+            // normalized, unless of unit length to within rounding: kept as given then (its bits, as the reference keeps them)
+            const bool unit = std::abs(q.squaredNorm() - 1) <= 8 * std::numeric_limits<Real>::epsilon();
+            *static_cast<Quaternionr*>(p) = unit ? q : q.normalized();
             break;
         }
         case AttrKind::IntVector: *static_cast<std::vector<int>*>(p) = castOr<std::vector<int>>(v, where, expected); break;

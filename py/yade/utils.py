@@ -164,8 +164,9 @@ def box(center, extents, orientation=Quaternion.Identity, dynamic=None, fixed=Fa
         fixed = not dynamic
     shape = Box(extents=extents, color=color if color is not None else randomColor(), wire=wire, highlight=highlight)
     x, y, z = 2 * extents[0], 2 * extents[1], 2 * extents[2]
-    b = _commonBodySetup(Body(), shape, _finiteVector('center', center), material, fixed, mask, x * y * z,
-                         Vector3(y * y + z * z, x * x + z * z, x * x + y * y) / 12.)
+    b = _commonBodySetup(Body(), shape, _finiteVector('center', center), material, fixed, mask, x * y * z, (1, 1, 1))
+    # m/12·(y² + z², ...), in the reference's order of operations (its bits)
+    b.state.inertia = Vector3(y * y + z * z, x * x + z * z, x * x + y * y) * (b.state.mass / 12.)
     b.state.ori = orientation
     return b
 

@@ -19,3 +19,5 @@ yade -n -x -j1 peri3d.py 2>/dev/null | grep '^PERI3D ' | sed 's/^PERI3D //' > da
 yade -n -x -j1 clump.py 2>/dev/null | grep '^CLUMP ' | sed 's/^CLUMP //' > data/clump.json
 # clumps on the packing side (tests/test_clump_packing.py): one JSON line
 yade -n -x -j1 clump_packing.py 2>/dev/null | grep '^CLUMPPACK ' | sed 's/^CLUMPPACK //' > data/clump_packing.json
+# aspherical rotation, Fincham's scheme (tests/test_aspherical_rotation.py): one JSON line
+yade -n -x -j1 aspherical.py 2>/dev/null | grep '^ASPHERICAL ' | sed 's/^ASPHERICAL //' > data/aspherical.json
