@@ -14,7 +14,7 @@ import warnings
 import numpy as np
 import pytest
 
-from yade import O, ForceResetter, NewtonIntegrator, Quaternion, Vector3, Matrix3, Clump, FrictMat
+from yade import O, ForceResetter, NewtonIntegrator, Quaternion, Vector3, Matrix3, Clump, FrictMat, Sphere
 from yade.utils import sphere, wall
 
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
@@ -354,3 +354,56 @@ def test_the_references_own_clump_tests():
               'print("RESULT", r.testsRun, len(r.failures), len(r.errors))\n') % REFERENCE_CLUMP
     out = subprocess.run([sys.executable, '-c', script], env=dict(os.environ), capture_output=True, text=True, timeout=300)
     assert 'RESULT 3 0 0' in out.stdout, out.stdout + out.stderr
+
+
+# --- replaceByClumps and getRoundness ---
+
+def dyads_and_triads():
+    from yade.utils import clumpTemplate
+    O.bodies.append([sphere((3 * i, 0, 0), 1 + .1 * i) for i in range(10)])
+    O.bodies.append(wall(-1, axis=2))
+    return (clumpTemplate(relRadii=[1, .5], relPositions=[[0, 0, 0], [.8, 0, 0]]),
+            clumpTemplate(relRadii=[1, 1, 1], relPositions=[[0, 0, 0], [1, 0, 0], [0, 1, 0]]))
+
+
+def test_replaceByClumps_gives_clumps_of_the_spheres_volume_as_the_reference():
+    """The reference on the same call (10 spheres, amounts .3 and .2 of a dyad and a triad template):
+    clump ids (13, 16, 19, 23, 27) with their members, each clump scaled so that the union of its members
+    (counted on the reference's grid) has the replaced sphere's volume: a dyad of the unit sphere has
+    radii 0.98463 and 0.49232, a triad of radius 1.1 members of 0.81656; getRoundness 0.922892155332467
+    (the reference's, to 1e-15: it does not depend on which spheres were chosen)."""
+    import random
+    random.seed(1)
+    t1, t2 = dyads_and_triads()
+    radii = {b.id: b.shape.radius for b in O.bodies if isinstance(b.shape, Sphere)}
+    centres = {b.id: b.state.pos for b in O.bodies if isinstance(b.shape, Sphere)}
+    assert O.bodies.getRoundness() == 1.0
+    out = O.bodies.replaceByClumps([t1, t2], [.3, .2])
+    assert [c for c, _ in out] == [13, 16, 19, 23, 27] and [m for _, m in out] == [[11, 12], [14, 15], [17, 18], [20, 21, 22], [24, 25, 26]]
+    assert sum(1 for b in O.bodies if b.isStandalone and isinstance(b.shape, Sphere)) == 5
+    for (cid, members), unit in zip(out, [(.9846321151767711, .49231605758838554)] * 3 + [(.8165615059458432 / 1.1,) * 3] * 2):
+        r = [O.bodies[m].shape.radius for m in members]
+        R = r[0] / unit[0]  # the replaced sphere's radius
+        assert any(abs(R - x) < 1e-12 for x in radii.values())
+        assert r == pytest.approx([R * u for u in unit], rel=1e-14)
+        # the members' mean position at the replaced sphere's centre
+        mean = sum((O.bodies[m].state.pos for m in members), Vector3.Zero) / len(members)
+        assert min((mean - c).norm() for c in centres.values()) < 1e-12
+    assert O.bodies.getRoundness() == pytest.approx(0.9228921553324673, rel=1e-14)
+    # excluded: a clump left out of the mean (the reference's 0.9300190390163645 left out its first dyad)
+    assert O.bodies.getRoundness([out[0][0]]) == pytest.approx(0.9300190390163645, rel=1e-14)
+    assert O.bodies.getRoundness([b.id for b in O.bodies]) == 0
+
+
+def test_replaceByClumps_refuses_bad_input_and_leaves_the_scene():
+    t1, t2 = dyads_and_triads()
+    before = [(b.id, b.clumpId) for b in O.bodies]
+    with pytest.raises(ValueError, match='same length'):
+        O.bodies.replaceByClumps([t1, t2], [.3])
+    with pytest.raises(ValueError, match='sum to 1.5'):
+        O.bodies.replaceByClumps([t1, t2], [.7, .8])
+    with pytest.raises(ValueError, match='fraction'):
+        O.bodies.replaceByClumps([t1], [-.1])
+    with pytest.raises(TypeError, match='clump templates'):
+        O.bodies.replaceByClumps([5], [.1])
+    assert [(b.id, b.clumpId) for b in O.bodies] == before
