@@ -11,14 +11,13 @@ equals the sphere's; members take the sphere's material, color and velocity."""
 import math
 import random
 
-import numpy as np
-
 from ._yade import O, Quaternion, Sphere, Vector3
 
 
 def templateVolume(relRadii, relPositions):
     """Volume of the union of the template's spheres, counted on a grid of cells of size min(radius)/5
     (centres from the box's lower corner)."""
+    import numpy as np  # (on first use: `import yade` does not load numpy)
     c = np.array([[float(x) for x in p] for p in relPositions])
     r = np.array([float(x) for x in relRadii])
     lo, hi = (c - r[:, None]).min(0), (c + r[:, None]).max(0)
