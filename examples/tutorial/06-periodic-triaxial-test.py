@@ -1,14 +1,21 @@
 # Tutorial 2.6.6 of the manual: a loose periodic cloud is compacted isotropically to sigmaIso by
 # PeriTriaxController (the cell moves as a mass: dynCell), then (compactionFinished) the stress
-# stays sigmaIso on x and y while z is shortened to a strain of -0.2. (The manual's version uses a
-# cloud of two-sphere clumps; this one uses spheres.) doc/periodic.md describes the controller.
+# stays sigmaIso on x and y while z is shortened to a strain of -0.2. The packing is a cloud of
+# three-sphere clumps, as in the manual (set `clumps = False` for spheres). doc/periodic.md describes
+# the controller, doc/clumps.md the clumps.
 from yade import pack, plot
 
 sigmaIso = -1e5
+clumps = True
 
 O.periodic = True
 sp = pack.SpherePack()
-sp.makeCloud((0, 0, 0), (2, 2, 2), rMean=.1, rRelFuzz=.3, periodic=True)
+if not clumps:
+    sp.makeCloud((0, 0, 0), (2, 2, 2), rMean=.1, rRelFuzz=.3, periodic=True)
+else:
+    # the clump's template: its members' centres and radii, relative to the clump
+    c1 = pack.SpherePack([((0, 0, 0), .08), ((.07, 0, 0), .04), ((0, .07, 0), .04)])
+    sp.makeClumpCloud((0, 0, 0), (2, 2, 2), [c1], periodic=True, num=500)
 sp.toSimulation()
 
 O.engines = [
