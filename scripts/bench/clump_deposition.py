@@ -1,10 +1,10 @@
 # Clump deposition benchmark: rigid clumps of two or three spheres settling in a box of walls.
 # Runs unchanged in any Yade-compatible engine:  yade -n -x -j1 clump_deposition.py [N] [STEPS] [SETTLE]
-# N clumps (default 2000, dyads and triads alternating with a seeded draw), each with a seeded
-# random orientation, on a loose lattice (cell 4 r, every clump fits in a ball of radius 1.8 r, so
-# no clump touches another or a wall at the start), fall under gravity onto the floor of a box
-# of 5 utils.wall planes. SETTLE untimed steps (the lower layers land, contacts form), then STEPS
-# timed steps.
+# N clumps (default 2000, each a dyad or a triad by a seeded coin, with a seeded random
+# orientation) on a loose lattice (cell 4 r; every clump fits in a ball of radius 1.8 r, so no
+# clump touches another or a wall at the start) fall under gravity onto the floor of a box of 5
+# utils.wall planes. SETTLE untimed steps (default 4000: the lower layers have landed, the upper
+# ones are landing), then STEPS timed steps (default 2000: the last ones land, the bed settles).
 # Prints one line: "N=<clumps> spheres=<members> steps=<n> contacts=<c> iter_per_s=<x>
 #   clump_steps_per_s=<y> mean_z=<mean height of the clumps' centres> max_z=<highest centre>"
 import sys, time, math, random
@@ -12,8 +12,8 @@ from yade.utils import *
 
 args = [a for a in sys.argv[1:] if not a.startswith('-')]
 N = int(args[0]) if len(args) > 0 else 2000
-STEPS = int(args[1]) if len(args) > 1 else 1000
-SETTLE = int(args[2]) if len(args) > 2 else 2000
+STEPS = int(args[1]) if len(args) > 1 else 2000
+SETTLE = int(args[2]) if len(args) > 2 else 4000
 
 O.reset()
 O.materials.append(FrictMat(young=1e7, poisson=.3, frictionAngle=.5, density=2600, label='mat'))
