@@ -121,14 +121,6 @@ Body::id_t Clump::make(Scene& s, const std::vector<Body::id_t>& ids, int discret
     return id;
 }
 
-void Clump::updateProperties(Scene& s, Body& clump, int discretization) {
-    Clump& c = static_cast<Clump&>(*clump.shape);
-    std::vector<ClumpPart> parts;
-    for (Body::id_t id : c.memberIds) parts.push_back(partOf(*s.bodies[id]));
-    const ClumpFrame f = frameOf(parts, discretization);
-    setUp(s, clump, c.memberIds, f);
-}
-
 void Clump::add(Scene& s, const std::vector<Body::id_t>& ids, Body::id_t clumpId, int discretization) {
     Clump& c = of(s, clumpId);
     // the new members: standalone bodies, and the members of the clumps listed (which end)

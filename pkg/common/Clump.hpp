@@ -31,7 +31,10 @@ public:
         return relPos.size() == memberIds.size() && relOri.size() == memberIds.size() ? &memberIds : nullptr;
     }
 
-    // --- making and changing clumps (each checks everything first: on an error the scene is as it was) ---
+    // --- making and changing clumps (each checks everything first: on an error the scene is as it was).
+    // Each computes the clump's mass, centroid, inertia and orientation from its members again
+    // (discretization 0: summed, else integrated on a grid: pkg/common/ClumpInertia.hpp) and the
+    // members' places in its frame. ---
     // Makes a clump of existing standalone bodies; returns its id (the next free one).
     static Body::id_t make(Scene& s, const std::vector<Body::id_t>& ids, int discretization);
     // Adds standalone bodies, or all members of other clumps (those clumps are erased), to a clump.
@@ -40,9 +43,6 @@ public:
     static bool release(Scene& s, Body::id_t id, Body::id_t clumpId, int discretization);
     // Erases a clump: its members are erased with it, or made standalone.
     static void erase(Scene& s, Body::id_t clumpId, bool eraseMembers);
-    // The clump's mass, centroid, inertia and orientation from its members (discretization 0: summed,
-    // else integrated on a grid, core/ClumpInertia.hpp), and the members' places in its frame.
-    static void updateProperties(Scene& s, Body& clump, int discretization);
 
     // O.bodies.getRoundness: the mean over standalone spheres (1 each) and clumps of R1/R2, R1 the
     // radius of a sphere of the members' summed volume, R2 the largest distance of a member's surface
