@@ -329,17 +329,18 @@ def test_modules_and_aliases_the_reference_start_up_leaves_in_the_namespace(tmp_
     assert out["complex"].split()[0] == "15.0" and out["complex"].split()[1] == "True"
 
 
-def test_qt_import_says_there_is_no_gui(tmp_path):
-    """`from yade import qt` (45 of the reference's examples) raises ImportError naming the missing GUI, as the
-    reference's does headless, instead of Python's bare 'cannot import name'."""
+def test_qt_import_works_headless(tmp_path):
+    """`from yade import qt` (166 of the reference's 335 examples) succeeds with -n, where the reference's raises
+    ImportError: the view and the controller warn and do nothing, and the script goes on (tests/test_qt_headless.py)."""
     script = write(tmp_path, "q.py", """\
-        try:
-            from yade import qt
-        except ImportError as e:
-            print("err", "no Qt GUI" in str(e), "opts.nogui" in str(e))
+        from yade import qt
+        v = qt.View()
+        v.viewDir = (0, 1, 0)
+        qt.Controller()
         O.bodies.append(sphere((0, 0, 0), 1))
-        print("after", len(O.bodies))
+        print("after", len(O.bodies), v.viewDir)
     """)
     r = run("-n", "-x", script)
     assert r.returncode == 0, r.stderr
-    assert "err True True" in r.stdout and "after 1" in r.stdout
+    assert "after 1 Vector3(0,1,0)" in r.stdout
+    assert "View(): this build has no 3D view yet" in r.stderr

@@ -188,7 +188,8 @@ class Filler:
             if name == 'label':
                 label = 'rt%d_label' % k
                 return [label]
-            return ['x = "<&>" \'%d\' é\t# %s' % (k, name)]
+            text = 'x = "<&>" \'%d\' é\t# %s' % (k, name)
+            return [text, text + ' (2)']  # (a class-wide string keeps the first from an earlier zoo)
         if isinstance(val, Vector3):
             a = self.real()
             return [Vector3(a, a + 0.0011, a + 0.0023)]
@@ -215,6 +216,8 @@ class Filler:
             return [[Vector2(a, a + .3), Vector2(a + 1, a + .7)]]
         if isinstance(val, list) and name == 'matches':  # MatchMaker: (id1, id2, value) triples
             return [[Vector3(k, k + 1, .25), Vector3(0, k, .5)]]
+        if isinstance(val, list) and name == 'snapshots':  # SnapshotEngine: file names
+            return [['frame-%04d.png' % k, 'frame-%04d.png' % (k + 1)]]
         if isinstance(val, list) and name not in ('functors', 'callbacks'):  # a list of ints (PartialEngine.ids)
             return [[k, k + 1, k + 5]]
         return []
@@ -223,7 +226,7 @@ class Filler:
         cls = type(obj).__name__
         for name, val in obj.dict().items():
             val = copied(val)  # math values are views of the attribute: keep the old value
-            if val is None or isinstance(val, Serializable) or name in ('functors', 'comb', 'callbacks'):  # (lists of objects)
+            if val is None or isinstance(val, Serializable) or name in ('functors', 'comb', 'callbacks', 'extraDrawers'):  # (lists of objects)
                 continue
             for cand in self.candidates(name, val):
                 try:
@@ -362,6 +365,15 @@ def build_zoo():
     c.velGrad = Matrix3(.2, 0, .05, 0, -.1, 0, .01, 0, .3)  # (nextVelGrad; velGradChanged)
     c.homoDeform, c.flipFlippable = 1, True
     slots.append(('O.cell', lambda: O.cell))
+    # the 3D view's settings, which have no place of their own in a scene: in O.miscParams (the drawing
+    # functors' settings are class-wide, so the round trip compares what the load set them to)
+    glClasses = [yade.OpenGLRenderer, yade.GlExtraDrawer] + [
+        c for family in (yade.GlShapeFunctor, yade.GlBoundFunctor, yade.GlIGeomFunctor, yade.GlIPhysFunctor, yade.GlStateFunctor)
+        for c in subclasses_of(family, classes)]
+    O.miscParams = [f.make(c) for c in glClasses]
+    O.miscParams[0].extraDrawers = [f.make(yade.GlExtraDrawer)]
+    for i in range(len(glClasses)):
+        slots.append(('O.miscParams[%d]' % i, lambda i=i: O.miscParams[i]))
     return f, slots
 
 

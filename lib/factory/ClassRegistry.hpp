@@ -142,6 +142,10 @@ template <class T> struct AttrCollector {
                 }
             }
         }
+        if (flags & Attr::classWide) { // a static member: the same place for every object
+            void* where = &member;
+            a.address = [where](Serializable&) -> void* { return where; };
+        }
         if (!a.peek) a.peek = [address = a.address](Serializable& s) -> const void* { return address(s); };
         if constexpr (AttrKindOf<M>::kind == AttrKind::Ptr) {
             using P = typename M::element_type;

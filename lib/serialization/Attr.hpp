@@ -22,6 +22,8 @@ namespace Attr {
         nonNegative = 1u << 4, // value must be >= 0 and finite
         finite = 1u << 5,      // value (or each component) must be finite
         readCopy = 1u << 6,    // read from Python as a copy, not a view (the reference's properties, State.pos)
+        classWide = 1u << 7,   // a static member: one value for the class, read and set as Class.name as well
+                               // as through any instance (the drawing functors' settings, Gl1_Sphere.quality)
     };
 }
 

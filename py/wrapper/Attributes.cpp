@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
+using namespace pybind11::literals;
 
 namespace yade {
 
@@ -275,14 +276,37 @@ static void assign(Serializable& s, const AttrInfo& a, py::handle v) {
     }
 }
 
+// A class-wide attribute (Attr::classWide, a static member) is a pybind11 static property: its getter and
+// setter get the class, and reach the static member through one instance made for that purpose, so that
+// `Gl1_Sphere.quality = 2` sets it (a plain property would be replaced by the number) and every instance
+// shows it. A vector is read as a view of the static member, which lives as long as the program.
+static void defineClassWideProperty(py::handle cls, const ClassInfo& info, const AttrInfo* a, const std::string& doc) {
+    // pybind11's static property type, subclassed so that its objects have a __dict__ for __doc__ (pybind11's
+    // own def_property_static fails there on Python 3.11: "attribute '__doc__' is read-only").
+    static py::object classWideAttr = py::module_::import("builtins").attr("type")(
+            "ClassWideAttribute", py::make_tuple(py::handle(reinterpret_cast<PyObject*>(py::detail::get_internals().static_property_type))),
+            py::dict("__module__"_a = "yade.wrapper"));
+    std::shared_ptr<Serializable> any = info.factory();
+    py::cpp_function getter([any, a](py::object) { return getAttr(*any, *a, py::none()); });
+    py::cpp_function setter([any, a](py::object, py::object v) { setAttr(*any, *a, v); });
+    py::object property = classWideAttr(getter, setter);
+    property.attr("__doc__") = doc;
+    cls.attr(a->name.c_str()) = property;
+}
+
 void defineAttrProperties(py::handle cls, const ClassInfo& info) {
     auto property = py::module_::import("builtins").attr("property");
     for (size_t i = info.ownAttrsBegin; i < info.attrs.size(); ++i) {
         const AttrInfo* a = &info.attrs[i];
         if (a->has(Attr::hidden)) continue;
+        std::string doc = a->doc + " (" + kindName(a->kind) + (a->has(Attr::readonly) ? ", read-only" : "") +
+                          (a->has(Attr::classWide) ? ", one value for the class" : "") + ")";
+        if (a->has(Attr::classWide)) {
+            defineClassWideProperty(cls, info, a, doc);
+            continue;
+        }
         py::cpp_function getter([a](py::object self) { return getAttr(py::cast<Serializable&>(self), *a, self); });
         py::cpp_function setter([a](py::object self, py::object v) { setAttr(py::cast<Serializable&>(self), *a, v); });
-        std::string doc = a->doc + " (" + kindName(a->kind) + (a->has(Attr::readonly) ? ", read-only" : "") + ")";
         cls.attr(a->name.c_str()) = property(getter, setter, py::none(), doc);
     }
 }

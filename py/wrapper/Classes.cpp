@@ -211,6 +211,9 @@ static void bindExtras(py::module_& m) {
                 py::none(), py::none(), "Index of the class for dispatch (read-only)");
     }
 
+    existing<Functor, Serializable>().def_property_readonly("bases", &Functor::argTypes,
+            "Names of the classes this functor takes, as the dispatcher matches them (read-only)");
+
     existing<State, Serializable>()
             .def_property("blockedDOFs", &State::blockedDOFs,
                     [](State& st, const std::string& dofs) {

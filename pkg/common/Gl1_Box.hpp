@@ -1,0 +1,14 @@
+// Draws boxes in the 3D view.
+#pragma once
+#include <pkg/common/Box.hpp>
+#include <pkg/common/GlFunctors.hpp>
+
+namespace yade {
+
+class Gl1_Box : public GlFunctorOf<GlShapeFunctor, Box> {
+public:
+    static constexpr const char* classDoc = "Draws boxes in the 3D view (filled unless the body's shape is wire).";
+    template <class V> void visit(V& v) { GlShapeFunctor::visit(v); }
+};
+
+} // namespace yade

@@ -1,0 +1,18 @@
+// Draws facets in the 3D view (class-wide settings, as in the reference).
+#pragma once
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/GlFunctors.hpp>
+
+namespace yade {
+
+class Gl1_Facet : public GlFunctorOf<GlShapeFunctor, Facet> {
+public:
+    static constexpr const char* classDoc = "Draws facets in the 3D view: their edges, filled unless wire.";
+    inline static bool normals = false;
+    template <class V> void visit(V& v) {
+        GlShapeFunctor::visit(v);
+        v.attr("normals", normals, "Also draw each facet's normal and its edges' normals", Attr::classWide);
+    }
+};
+
+} // namespace yade
