@@ -2,7 +2,7 @@
 """Run the reference Yade's example scripts here (and, with --reference, in the reference too) and report,
 script by script, where each stops: the first error, or none within the time limit.
 
-    /usr/bin/python3 scripts/examples_sweep.py [--timeout 10] [--reference] [--only SUBSTRING] [--cpu 1]
+    /usr/bin/python3 scripts/examples_sweep.py [--timeout 10] [--reference] [--only SUBSTRING] [--grep REGEX] [--cpu 1]
 
 The examples come with the reference's documentation package (yade-doc, /usr/share/doc/yade/examples);
 they are copied to a scratch folder first (many write files beside themselves) and each runs from its own
@@ -56,6 +56,8 @@ def main(argv=None):
     ap.add_argument("--timeout", type=float, default=10)
     ap.add_argument("--reference", action="store_true", help="run each script in the reference too (`yade` on PATH)")
     ap.add_argument("--only", default="", help="only the scripts whose path contains this")
+    ap.add_argument("--grep", default="", help="only the scripts whose text matches this regular expression "
+                    "(e.g. 'yade import .*qt' for those that open a view)")
     ap.add_argument("--cpu", type=int, default=0)
     a = ap.parse_args(argv)
     if not os.path.isdir(EXAMPLES):
@@ -76,6 +78,8 @@ def main(argv=None):
             shutil.copytree(EXAMPLES, copy)
             scripts = sorted(os.path.relpath(os.path.join(d, f), copy) for d, _, fs in os.walk(copy) for f in fs if f.endswith(".py"))
             scripts = [s for s in scripts if a.only in s]
+            if a.grep:
+                scripts = [s for s in scripts if re.search(a.grep, open(os.path.join(copy, s), errors="replace").read())]
             for s in scripts:
                 results[name][s] = stopper(binary, os.path.join(copy, os.path.dirname(s)), os.path.basename(s), a.timeout, a.cpu)
                 print("%-9s %-70s %s" % (name, s, results[name][s] or "ran"), flush=True)

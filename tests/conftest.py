@@ -1,5 +1,12 @@
 """Fixtures shared by the test files that run scenes in this process."""
+import os
+
 import pytest
+
+# The suite runs headless: `yade.qt` imported by a test gives the views without a display
+# (tests/test_qt_headless.py). The tests of the real views start their own processes under Xvfb.
+os.environ.pop("DISPLAY", None)
+os.environ.pop("WAYLAND_DISPLAY", None)
 
 
 @pytest.fixture

@@ -1,8 +1,10 @@
 // Saves the 3D view as image files periodically (manual "3d view", making videos): fileBase followed by a
-// zero-padded counter. The view belongs to the GUI; without one (no display, -n, or a build without Qt)
-// the engine says so once and takes nothing, so that scripts written with it run headless unchanged.
+// zero-padded counter and the format's extension. The view belongs to the GUI (yade.qt), which installs the
+// taker; without a view (no display, -n) the engine says so once and takes nothing, so that scripts
+// written with it run headless unchanged.
 #pragma once
 #include <core/PeriodicEngine.hpp>
+#include <functional>
 
 namespace yade {
 
@@ -28,6 +30,12 @@ public:
         v.attr("plot", plot, "Name of a yade.plot figure whose image is saved with each snapshot ('': none)");
     }
     void action() override;
+    // Saves the view into `file`: "" when saved, else why not (noView: there is no view at all).
+    using Taker = std::function<std::string(SnapshotEngine&, const std::string& file)>;
+    static void setTaker(Taker taker);
+    static constexpr const char* noView = "there is no 3D view (no display, or -n)";
+    // The name of snapshot number `counter`, as the reference's: fileBase + 5 digits + "." + format in lower case.
+    std::string fileName() const;
 };
 
 } // namespace yade

@@ -1,10 +1,12 @@
 // The compiled part of the yade package.
 #include <pkg/RegisterClasses.hpp>
 #include <py/wrapper/Classes.hpp>
+#include <py/wrapper/DisplayWrapper.hpp>
 #include <py/wrapper/Math.hpp>
 #include <lib/base/Logging.hpp>
 #include <lib/serialization/Node.hpp>
 #include <pkg/common/PyRunner.hpp>
+#include <pkg/common/SnapshotEngine.hpp>
 #include <pkg/dem/NewtonIntegrator.hpp>
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
@@ -49,6 +51,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindCell(m);
     yade::bindScGeom(m);
     yade::bindFrictVisco(m);
+    yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
     yade::PyRunner::setCommandRunner([](const std::string& command) {
@@ -63,6 +66,17 @@ PYBIND11_MODULE(_yade, m) {
             PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(replacement.ptr())), replacement.ptr());
             throw pybind11::error_already_set();
         }
+    });
+    // SnapshotEngine asks the GUI (yade.qt._takeSnapshot(file, format, timeout): "" when saved, else why not,
+    // None when there is no view); without yade.qt imported there is no view.
+    yade::SnapshotEngine::setTaker([](yade::SnapshotEngine& e, const std::string& file) -> std::string {
+        pybind11::gil_scoped_acquire gil;
+        pybind11::dict modules = pybind11::module_::import("sys").attr("modules");
+        if (!modules.contains("yade.qt")) return yade::SnapshotEngine::noView;
+        pybind11::object take = pybind11::getattr(modules["yade.qt"], "_takeSnapshot", pybind11::none());
+        if (take.is_none()) return yade::SnapshotEngine::noView;
+        pybind11::object r = take(file, e.format, e.deadTimeout);
+        return r.is_none() ? std::string(yade::SnapshotEngine::noView) : r.cast<std::string>();
     });
     // Engine warnings become Python RuntimeWarnings (shown once per message by default).
     yade::setWarningSink([](const std::string& msg) {

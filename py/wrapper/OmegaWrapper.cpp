@@ -87,30 +87,6 @@ namespace {
 // Python index → id, with negative indices from the end.
 long normIndex(long i, size_t n) { return i < 0 ? i + (long)n : i; }
 
-// Held while Python adds or removes bodies or interactions: a loop running in the background is
-// stopped at the end of its step first (the GIL released meanwhile: a PyRunner may need it) and
-// started again afterwards, so that no engine sees the containers change under it. From inside
-// the loop (a PyRunner) the change happens at once, between two engines.
-class BetweenSteps {
-public:
-    BetweenSteps() {
-        Omega& o = omega();
-        if (o.inLoopThread() || !o.isRunning()) return;
-        py::gil_scoped_release nogil;
-        resume = o.interrupt();
-    }
-    ~BetweenSteps() {
-        if (!resume) return;
-        py::gil_scoped_release nogil;
-        omega().run(-1); // stopAtIter is kept: a run of n steps still ends where it would have
-    }
-    BetweenSteps(const BetweenSteps&) = delete;
-    BetweenSteps& operator=(const BetweenSteps&) = delete;
-
-private:
-    bool resume = false;
-};
-
 struct BodyContainerProxy {
     py::object append(py::object arg) {
         BetweenSteps between;
@@ -618,18 +594,31 @@ void loadScene(const std::function<std::shared_ptr<Scene>()>& load) {
     }
     throw std::logic_error("raiseNamingSource: no exception"); // (not reached)
 }
-// Blocks until the background run stops, with the GIL released, waking every 50 ms to let Python
-// handle signals: on Ctrl-C (KeyboardInterrupt, or whatever a signal handler raised) the run
-// stops at the end of its current step and the exception propagates.
+// The GUI's turn while the main thread waits for a run: yade.qt._whileWaiting (draws the open views and
+// saves the snapshots SnapshotEngine asks for), or None when yade.qt is not imported or has no view.
+static py::object guiWhileWaiting() {
+    py::dict modules = py::module_::import("sys").attr("modules");
+    if (!modules.contains("yade.qt")) return py::none();
+    return py::getattr(modules["yade.qt"], "_whileWaiting", py::none());
+}
+
+// Blocks until the background run stops, with the GIL released, waking every 50 ms (20 ms while the GUI
+// has views, to draw them) to let Python handle signals: on Ctrl-C (KeyboardInterrupt, or whatever a
+// signal handler raised) the run stops at the end of its current step and the exception propagates.
 void waitInterruptibly() {
     Omega& o = omega();
+    py::object gui = guiWhileWaiting();
     for (;;) {
         bool stopped;
         {
             py::gil_scoped_release nogil;
-            stopped = o.waitFor(std::chrono::milliseconds(50));
+            stopped = o.waitFor(std::chrono::milliseconds(gui.is_none() ? 50 : 20));
         }
-        if (stopped) break;
+        if (stopped) {
+            if (!gui.is_none()) gui(); // (the views show the last step; snapshots asked for are saved)
+            break;
+        }
+        if (!gui.is_none() && !py::cast<bool>(gui())) gui = py::none(); // (False: no view any more)
         if (PyErr_CheckSignals() != 0) {
             py::error_already_set e; // (takes the pending exception)
             {

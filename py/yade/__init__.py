@@ -47,3 +47,12 @@ if O.iter == 0 and len(O.engines) == 0 and len(O.bodies) == 0:  # (the first imp
 # modules (config, system, wrapper...). Keep this block last.
 __all__ = [_n for _n in dict(globals()) if not _n.startswith('_') and _n not in (
     'math', 'minieigenHP', 'config', 'system', 'wrapper', 'ymport', 'export', 'libVersions')]
+
+
+def __getattr__(name):
+    """`yade.qt` reached without importing it first (`yade.qt.Renderer()`), as in the reference, whose launcher
+    imports it when it has a GUI."""
+    if name == 'qt':
+        import importlib
+        return importlib.import_module('yade.qt')
+    raise AttributeError("module 'yade' has no attribute %r" % name)
