@@ -1,9 +1,10 @@
 """The reference's Qt GUI module: ``qt.View()``, ``qt.Controller()``, ``qt.Inspector()``, ``qt.Renderer()``,
-``qt.SnapshotEngine``, ``qt.views()``.
+``qt.SnapshotEngine``, ``qt.views()`` (doc/gui.md).
 
-This build has no 3D view yet (gui/README.md). So that scripts written with a view run unchanged where there
-is none anyway (``-n``, a batch job, a cluster node), importing this module succeeds, unlike the reference's,
-which raises ImportError without a display:
+With a display (``DISPLAY`` set, no ``-n``), PyQt5 and PyOpenGL, these open windows: the 3D view
+(glwidget.py, drawing.py), the controller (controller.py) and the inspector (inspector.py). Without them
+importing this module still succeeds, unlike the reference's, so that scripts written with a view run
+unchanged in batch jobs and on cluster nodes:
 
 - ``View()`` warns once and gives a view object that takes the camera settings scripts make (``eyePosition``,
   ``viewDir``, ``upVector``, ``ortho``, ``grid``...) and draws nothing; ``Controller()`` and ``Inspector()`` warn
@@ -11,13 +12,31 @@ which raises ImportError without a display:
 - the renderer's settings can be set: ``Renderer()`` is the one OpenGLRenderer of the session, and the drawing
   functors' settings are class attributes (``Gl1_Sphere.stripes = True``);
 - ``SnapshotEngine`` warns once at its first run and saves nothing.
+
+``noView`` says why there are no windows ('' when there are).
 """
+import os
+import queue
+import threading
 import warnings
 
 from yade.wrapper import *  # noqa: F401,F403  (the reference's qt namespace holds the wrapper's classes too)
 from yade.wrapper import OpenGLRenderer, SnapshotEngine  # noqa: F401
-from yade import math as _math
+from yade.qt.viewer import GLViewer
 
+
+def _whyNoView():
+    if not os.environ.get('DISPLAY') and not os.environ.get('WAYLAND_DISPLAY'):
+        return 'there is no display (DISPLAY is not set, or the launcher was given -n)'
+    try:
+        import PyQt5.QtWidgets  # noqa: F401
+        import OpenGL.GL  # noqa: F401
+    except ImportError as e:
+        return 'PyQt5 or PyOpenGL is missing (%s; apt-get install python3-pyqt5 python3-opengl)' % e
+    return ''
+
+
+noView = _whyNoView()
 _warned = set()
 
 
@@ -26,8 +45,8 @@ def _headless(what):
     if what in _warned:
         return
     _warned.add(what)
-    warnings.warn("yade.qt.%s: this build has no 3D view yet (see gui/README.md); the script goes on without it"
-                  % what, UserWarning, stacklevel=3)
+    warnings.warn("yade.qt.%s: %s, so there is no 3D view; the script goes on without it" % (what, noView or 'no view'),
+                  UserWarning, stacklevel=3)
 
 
 _renderer = None
@@ -42,97 +61,53 @@ def Renderer():
     return _renderer
 
 
-class GLViewer:
-    """A 3D view (the reference's GLViewer). Without a view to show, it keeps the camera settings a script gives
-    (checked as the reference's are) and draws nothing."""
-    _vectors = {'eyePosition': 3, 'lookAt': 3, 'upVector': 3, 'viewDir': 3}
-    __slots__ = ('_id', '_closed', 'axes', 'eyePosition', 'fps', 'grid', 'lookAt', 'ortho', 'scale',
-                 'sceneRadius', 'screenSize', 'selection', 'timeDisp', 'upVector', 'viewDir')
-
-    def __init__(self, viewId):
-        object.__setattr__(self, '_id', viewId)
-        object.__setattr__(self, '_closed', False)
-        # the reference's defaults for an empty scene
-        for name, value in (('axes', False), ('eyePosition', _math.Vector3(0, 0, 3.9196888946291293)), ('fps', False),
-                            ('grid', (False, False, False)), ('lookAt', _math.Vector3(0, 0, 2.9196888946291293)),
-                            ('ortho', False), ('scale', True), ('sceneRadius', 1.5),
-                            ('screenSize', _math.Vector2i(550, 550)), ('selection', -1), ('timeDisp', 'rvi'),
-                            ('upVector', _math.Vector3(0, 1, 0)), ('viewDir', _math.Vector3(0, 0, -1))):
-            object.__setattr__(self, name, value)
-
-    def __setattr__(self, name, value):
-        if name.startswith('_') or name not in GLViewer.__slots__:
-            raise AttributeError("GLViewer has no attribute '%s' (its settings: %s)"
-                                 % (name, ', '.join(n for n in GLViewer.__slots__ if not n.startswith('_'))))
-        if name in GLViewer._vectors:
-            try:
-                value = _math.Vector3(*value)
-            except TypeError:
-                raise TypeError("GLViewer.%s: expected a Vector3 or a sequence of 3 numbers, got %r" % (name, value)) from None
-        elif name == 'grid':
-            if len(value) != 3:
-                raise TypeError("GLViewer.grid: expected 3 booleans (the planes yz, zx, xy), got %r" % (value,))
-            value = tuple(bool(x) for x in value)
-        elif name == 'screenSize':
-            value = _math.Vector2i(*value)
-        elif name == 'sceneRadius':
-            value = float(value)
-            if not value > 0:
-                raise ValueError("GLViewer.sceneRadius must be positive (got %s)" % value)
-        elif name == 'selection':
-            value = int(value)
-        elif name == 'timeDisp':
-            value = str(value)
-            if set(value) - set('rvi'):
-                raise ValueError("GLViewer.timeDisp: letters r (real time), v (virtual time) and i (iteration) only, got %r"
-                                 % value)
-        else:
-            value = bool(value)
-        object.__setattr__(self, name, value)
-
-    def __repr__(self):
-        return '<GLViewer for view #%d (no display)>' % self._id
-
-    def center(self, median=True, suggestedRadius=-1):
-        """Centers the view on the scene (nothing to do without a display)."""
-
-    def fitAABB(self, mn, mx):
-        """Fits the view to a box (nothing to do without a display)."""
-
-    def fitSphere(self, center, radius):
-        """Fits the view to a sphere (nothing to do without a display)."""
-
-    def showEntireScene(self):
-        """Fits the view to the scene (nothing to do without a display)."""
-
-    def saveState(self, stateName='7'):
-        """Keeps the camera in a slot (nothing to do without a display)."""
-
-    def loadState(self, stateName='7'):
-        """Restores the camera from a slot (nothing to do without a display)."""
-
-    def saveSnapshot(self, filename):
-        """Would save the view as an image; without a display it warns once and saves nothing."""
-        _headless('saveSnapshot')
-
-    def close(self):
-        """Closes the view."""
-        if not self._closed:
-            object.__setattr__(self, '_closed', True)
-            _views.remove(self)
-
-
 _views = []
 _nextViewId = [0]
 
 
+def _forget(view):
+    if view in _views:
+        _views.remove(view)
+
+
+_app = None
+
+
+def _application():
+    global _app
+    from PyQt5 import QtWidgets
+    from yade.qt.glwidget import surfaceFormat
+    from PyQt5 import QtGui
+    app = QtWidgets.QApplication.instance()
+    if app is None:
+        QtGui.QSurfaceFormat.setDefaultFormat(surfaceFormat())
+        app = _app = QtWidgets.QApplication(['yade'])  # (kept: Qt needs it as long as there are windows)
+        app.setQuitOnLastWindowClosed(False)
+        try:  # at the IPython prompt, Qt's events are handled while it waits for input
+            ip = get_ipython()  # noqa: F821  (defined by IPython)
+            ip.enable_gui('qt5')
+        except Exception:
+            pass
+    return app
+
+
 def View():
-    """Opens a 3D view and returns it (the reference's qt.View()). Without a display: warns once and returns a
-    view that keeps its camera settings and draws nothing."""
-    _headless('View()')
-    v = GLViewer(_nextViewId[0])
+    """Opens a 3D view and returns it (a GLViewer). Without a display: warns once and returns a view that keeps
+    its camera settings and draws nothing."""
+    if noView:
+        _headless('View()')
+        v = GLViewer(_nextViewId[0], closeHook=_forget)
+    else:
+        _application()
+        from yade.qt.glwidget import ViewWidget
+        w = ViewWidget(Renderer(), 'Yade 3D view #%d' % _nextViewId[0])
+        v = GLViewer(_nextViewId[0], widget=w, closeHook=_forget)
+        w.show()
+        if not _views:  # the first view looks at the whole scene
+            v.center()
     _nextViewId[0] += 1
     _views.append(v)
+    _processEvents()
     return v
 
 
@@ -147,14 +122,109 @@ def center(median=True, suggestedRadius=-1):
         v.center(median, suggestedRadius)
 
 
+_controller = None
+_inspector = None
+
+
 def Controller():
-    """Opens the controller window (run, pause, step, dt, display settings). Without a display: warns once and
-    returns None (the reference's Controller() returns None too)."""
-    _headless('Controller()')
-    return None
+    """Opens the controller (run, pause, step, iteration and times, dt, save and load, the display's switches, a
+    Python command). Without a display: warns once and returns None, as the reference's does."""
+    global _controller
+    if noView:
+        _headless('Controller()')
+        return None
+    _application()
+    from yade.qt.controller import ControllerWindow
+    if _controller is None:
+        _controller = ControllerWindow(Renderer(), View)
+    _controller.show()
+    _controller.raise_()
+    _processEvents()
+    return _controller
 
 
 def Inspector():
-    """Opens the inspector (engines, bodies, interactions, cell). Without a display: warns once and returns None."""
-    _headless('Inspector()')
-    return None
+    """Opens the inspector: engines, bodies, interactions and the cell, every attribute shown and editable.
+    Without a display: warns once and returns None."""
+    global _inspector
+    if noView:
+        _headless('Inspector()')
+        return None
+    _application()
+    from yade.qt.inspector import InspectorWindow
+    if _inspector is None:
+        _inspector = InspectorWindow()
+    _inspector.show()
+    _processEvents()
+    return _inspector
+
+
+def _selectionChanged(bodyId):
+    """A view selected a body: the inspector shows it."""
+    if _inspector is not None and bodyId >= 0:
+        _inspector.showBody(bodyId)
+
+
+# ---------------------------------------------------------------- snapshots and the GUI's turn
+# A SnapshotEngine runs in the simulation's thread, which must not draw: it takes the frame's data there
+# (the loop is between two engines, so nothing moves meanwhile) and leaves it here; the main thread draws
+# and saves it at its next turn: at once when the engine runs in the main thread (O.step()), else while
+# O.run(n, True) or O.wait() waits, at the IPython prompt, or at the end of the script.
+_pending = queue.Queue()
+
+
+def _processEvents():
+    if noView:
+        return
+    from PyQt5 import QtWidgets
+    app = QtWidgets.QApplication.instance()
+    if app is not None:
+        app.processEvents()
+    _saveSnapshots()
+
+
+def _saveSnapshots():
+    while True:
+        try:
+            file, frame = _pending.get_nowait()
+        except queue.Empty:
+            return
+        v = next((v for v in _views if v._widget is not None), None)
+        if v is None:
+            warnings.warn("SnapshotEngine: the 3D view was closed before %s could be saved" % file, RuntimeWarning)
+            continue
+        try:
+            v._widget.saveSnapshot(file, frame)
+        except OSError as e:
+            warnings.warn("SnapshotEngine: %s" % e, RuntimeWarning)
+
+
+def _takeSnapshot(file, format, timeout):
+    """Called by SnapshotEngine (from C++): '' when the frame is taken, else why not; None: no view at all."""
+    if noView:
+        return None
+    if not any(v._widget is not None for v in _views):
+        return 'no 3D view is open (open one with qt.View())'
+    from yade import _yade
+    _pending.put((file, _yade._displayFrame(pauseRun=False)))
+    if threading.current_thread() is threading.main_thread():
+        _saveSnapshots()
+    return ''
+
+
+def _whileWaiting():
+    """The GUI's turn while O.run(n, True) or O.wait() waits (called from C++): draws and saves what is due.
+    False when there is nothing to do any more."""
+    if noView or not _views and _controller is None and _inspector is None:
+        return False
+    _processEvents()
+    return True
+
+
+def _flushAtExit():
+    if not noView and not _pending.empty():
+        _saveSnapshots()
+
+
+import atexit  # noqa: E402
+atexit.register(_flushAtExit)

@@ -1,0 +1,265 @@
+"""The 3D view, the controller and the inspector with a display (issue 37), under Xvfb: each test runs a script in
+its own process (`xvfb-run`), which prints what it measured as JSON; the assertions are on pixels of the
+rendered images, on files written, and on what the windows' API did to the scene.
+
+Skipped when xvfb-run, PyQt5 or PyOpenGL is missing (the headless module is tested in test_qt_headless.py)."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def _missing():
+    if not shutil.which("xvfb-run"):
+        return "xvfb-run is not installed (apt-get install xvfb)"
+    for module in ("PyQt5.QtWidgets", "OpenGL.GL"):
+        r = subprocess.run([sys.executable, "-c", "import " + module], capture_output=True)
+        if r.returncode != 0:
+            return "%s is not installed" % module
+    return ""
+
+
+pytestmark = pytest.mark.skipif(bool(_missing()), reason=_missing() or "ok")
+
+PRELUDE = """\
+import json, os, sys
+import numpy
+from yade import *
+from yade import qt
+assert qt.noView == '', qt.noView
+from PyQt5.QtGui import QImage
+
+def pixel(img, x, y):
+    c = img.pixelColor(int(round(x)), int(round(y)))
+    return [c.red(), c.green(), c.blue()]
+
+def projected(v, points):
+    w = v._widget
+    return v._camera.project(numpy.array(points, dtype=float), w.width(), w.height())
+"""
+
+
+def run(tmp_path, body, launcher=False, timeout=240):
+    script = tmp_path / "gui_script.py"
+    script.write_text(PRELUDE + textwrap.dedent(body))
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "build"), XDG_RUNTIME_DIR=str(tmp_path))
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"]
+    cmd += [os.path.join(ROOT, "yade"), "-x", str(script)] if launcher else [sys.executable, str(script)]
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env, cwd=str(tmp_path))
+    assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
+    lines = [l for l in r.stdout.splitlines() if l.startswith("{")]
+    assert lines, r.stdout[-3000:] + r.stderr[-3000:]
+    return json.loads(lines[-1])
+
+
+def close(a, b, tol=40):
+    return all(abs(x - y) <= tol for x, y in zip(a, b))
+
+
+def test_view_draws_spheres_facets_and_the_background_where_the_camera_says(tmp_path):
+    out = run(tmp_path, """
+        O.bodies.append(utils.sphere((0, 0, 0), 1, color=(1, 0, 0)))
+        O.bodies.append(utils.sphere((3, 0, 0), 0.5, color=(0, 1, 0)))
+        O.bodies.append(utils.facet([(-2, -2, -1.5), (4, -2, -1.5), (1, 3, -1.5)], color=(0, 0, 1), wire=True))
+        v = qt.View()
+        v.saveSnapshot('a.png')
+        img = QImage('a.png')
+        (rx, ry), (gx, gy), (ex, ey) = projected(v, [(0, 0, 0), (3, 0, 0), (1, -2, -1.5)])
+        res = dict(size=[img.width(), img.height()], red=pixel(img, rx, ry), green=pixel(img, gx, gy),
+                   edge=max((pixel(img, ex, ey + d) for d in (-1, 0, 1)), key=lambda c: c[2]),
+                   corner=pixel(img, 3, 3), between=pixel(img, (rx + gx) / 2, ry - 0.3 * img.height()),
+                   eye=list(v.eyePosition), sceneRadius=v.sceneRadius)
+        qt.Renderer().bgColor = (0, 0, 1)
+        qt.Renderer().shape = False
+        v.saveSnapshot('b.png')
+        img = QImage('b.png')
+        res.update(cornerBlue=pixel(img, 3, 3), redHidden=pixel(img, rx, ry))
+        print(json.dumps(res))
+    """)
+    assert out["size"] == [550, 550]  # the reference's default view size
+    assert out["red"][0] > 150 and out["red"][1] < 60 and out["red"][2] < 60, out  # the red sphere's centre
+    assert out["green"][1] > 150 and out["green"][0] < 60, out
+    assert out["edge"][2] > 150 and out["edge"][0] < 60, out  # on the facet's lower edge: its blue wire
+    assert close(out["corner"], [51, 51, 51], 3)  # OpenGLRenderer.bgColor (0.2, 0.2, 0.2)
+    assert close(out["between"], [51, 51, 51], 3)
+    assert close(out["cornerBlue"], [0, 0, 255], 3)
+    assert close(out["redHidden"], [0, 0, 255], 3)  # OpenGLRenderer.shape = False: nothing drawn
+    # the first view is centred on the scene, seen along -z as the reference's
+    assert out["eye"][0] == pytest.approx(1.0) and out["eye"][1] == pytest.approx(0.5) and out["eye"][2] > 5
+
+
+def test_camera_settings_move_what_is_drawn(tmp_path):
+    out = run(tmp_path, """
+        O.bodies.append(utils.sphere((0, 0, 0), 1, color=(1, 0, 0)))
+        v = qt.View()
+        v.eyePosition = (0, -10, 0)
+        v.viewDir = (0, 1, 0)
+        v.upVector = (0, 0, 1)
+        v.saveSnapshot('a.png')
+        a = QImage('a.png')
+        (x, y), = projected(v, [(0, 0, 0)])
+        v.eyePosition = (0, -10, 2)  # the camera goes up: the sphere goes down on the image
+        v.saveSnapshot('b.png')
+        b = QImage('b.png')
+        (x2, y2), = projected(v, [(0, 0, 0)])
+        v.ortho = True
+        v.saveSnapshot('c.png')
+        print(json.dumps(dict(center=[x, y], centerA=pixel(a, x, y), after=[x2, y2], centerB=pixel(b, x2, y2),
+                              oldSpotB=pixel(b, x, y - 0.2 * b.height()), orthoCenter=pixel(QImage('c.png'), x2, y2),
+                              lookAt=list(v.lookAt))))
+    """)
+    assert out["center"] == pytest.approx([275, 275], abs=1)
+    assert out["centerA"][0] > 150
+    assert out["after"][1] > out["center"][1] + 50  # lower on the image
+    assert out["centerB"][0] > 150
+    assert close(out["oldSpotB"], [51, 51, 51], 3)
+    assert out["orthoCenter"][0] > 150
+    assert out["lookAt"] == pytest.approx([0, -9, 2])  # eyePosition + viewDir, as the reference's
+
+
+def test_force_chains_bounds_and_periodic_cell(tmp_path):
+    out = run(tmp_path, """
+        O.periodic = True
+        O.cell.setBox(4, 4, 4)
+        O.bodies.append([utils.sphere((1.5, 2, 2), 0.52, color=(.5, .5, .5)), utils.sphere((2.5, 2, 2), 0.52, color=(.5, .5, .5))])
+        O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                     [Law2_ScGeom_FrictPhys_CundallStrack()]), NewtonIntegrator()]
+        O.dt = 1e-6
+        O.step()
+        v = qt.View()
+        r = qt.Renderer()
+        r.shape = False
+        v.saveSnapshot('none.png')
+        r.intrPhys = True
+        v.saveSnapshot('chains.png')
+        r.intrPhys = False
+        r.bound = True
+        v.saveSnapshot('bounds.png')
+        lo, hi = O.bodies[0].bound.min, O.bodies[0].bound.max  # (on an edge of the box: x = min, z = max)
+        (mx, my), (c0x, c0y), (c1x, c1y), (bx, by) = projected(v, [(2, 2, 2), (0, 0, 4), (4, 0, 4), (lo[0], (lo[1] + hi[1]) / 2, hi[2])])
+        cellEdge = [(c0x + c1x) / 2, (c0y + c1y) / 2]
+        none, chains, bounds = QImage('none.png'), QImage('chains.png'), QImage('bounds.png')
+        print(json.dumps(dict(contacts=O.interactions.countReal(), midNone=pixel(none, mx, my), midChains=pixel(chains, mx, my),
+                              cell=max((pixel(none, cellEdge[0], cellEdge[1] + d) for d in (-1, 0, 1)), key=sum),
+                              bound=max((pixel(bounds, bx + dx, by + dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)), key=sum))))
+    """)
+    assert out["contacts"] == 1
+    assert close(out["midNone"], [51, 51, 51], 3)
+    assert out["midChains"] != out["midNone"] and max(out["midChains"]) > 100  # the band of the contact's force
+    assert out["cell"][0] > 150 and out["cell"][1] > 150 and out["cell"][2] < 60  # OpenGLRenderer.cellColor: yellow
+    assert out["bound"][0] > 150 and out["bound"][1] > 150  # the Aabb's edge
+
+
+def test_snapshot_engine_writes_numbered_frames_of_a_script_run_with_x(tmp_path):
+    """The reference times out here (its view waits for the script, which waits for the run) and writes nothing."""
+    out = run(tmp_path, """
+        O.bodies.append([utils.sphere((0, 0, 3), 0.5, color=(1, 0, 0)), utils.wall(0, axis=2)])
+        O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+                     InteractionLoop([Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                     [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                     NewtonIntegrator(gravity=(0, 0, -9.81), damping=0),
+                     qt.SnapshotEngine(fileBase='frames/f-', iterPeriod=500, label='snap')]
+        O.dt = 1e-4
+        os.makedirs('frames')
+        v = qt.View()
+        v.eyePosition = (0, -12, 2); v.viewDir = (0, 1, 0); v.upVector = (0, 0, 1)
+        O.run(5000, True)  # 0.5 s: the sphere falls 1.2 m
+        first, last = QImage(snap.snapshots[0]), QImage(snap.snapshots[-1])
+        (x, y), (x1, y1) = projected(v, [(0, 0, 3), O.bodies[0].state.pos])
+        print(json.dumps(dict(files=sorted(os.listdir('frames')), snapshots=snap.snapshots, counter=snap.counter,
+                              size=[last.width(), last.height()], startFirst=pixel(first, x, y), startLast=pixel(last, x, y),
+                              nowLast=pixel(last, x1, y1), z=O.bodies[0].state.pos[2])))
+    """, launcher=True)
+    # 9 frames in 5 000 steps every 500, as the reference's PeriodicEngine counts them (3 in 20 steps every 5)
+    assert out["files"] == ["f-%05d.png" % i for i in range(9)]
+    assert out["snapshots"] == ["frames/f-%05d.png" % i for i in range(9)] and out["counter"] == 9
+    assert out["size"] == [550, 550]
+    assert out["z"] == pytest.approx(3 - 9.81 * 0.5 ** 2 / 2, abs=1e-3)
+    assert out["startFirst"][0] > 150  # the sphere where it started, in the first frame
+    assert close(out["startLast"], [51, 51, 51], 3)  # gone from there in the last (taken at step 4 500)
+    assert out["nowLast"][0] > 150  # and near where it is now
+
+
+def test_inspector_shows_and_edits_attributes_and_refuses_bad_values(tmp_path):
+    out = run(tmp_path, """
+        O.bodies.append([utils.sphere((0, 0, 0), 1), utils.sphere((3, 0, 0), 1)])
+        O.engines = [NewtonIntegrator(damping=0.2, label='newton')]
+        ins = qt.Inspector()
+        res = {}
+        ins.select(O.engines[0])
+        res['damping'] = ins.value('damping')
+        res['setDamping'] = ins.setAttribute('damping', '0.35')
+        res['damping2'] = newton.damping
+        res['badDamping'] = ins.setAttribute('damping', '"much"')
+        res['damping3'] = newton.damping
+        ins.select(O.bodies[1].shape)
+        res['setRadius'] = ins.setAttribute('radius', '0.25')
+        res['radius'] = O.bodies[1].shape.radius
+        res['badRadius'] = ins.setAttribute('radius', 'float("nan")')
+        res['radius2'] = O.bodies[1].shape.radius
+        res['color'] = ins.setAttribute('color', 'Vector3(1, 0, 0)') is None and list(O.bodies[1].shape.color)
+        v = qt.View()
+        (x, y), = projected(v, [(3, 0, 0)])
+        v._widget.renderFrame()
+        res['picked'] = v._widget.select(x, y)
+        res['selection'] = v.selection
+        res['selId'] = qt.Renderer().selId
+        res['inspected'] = [ins.value('id'), ins.value('shape')]
+        ins.rebuild()
+        res['tree'] = [ins.tree.topLevelItem(i).text(0) for i in range(ins.tree.topLevelItemCount())]
+        print(json.dumps(res))
+    """)
+    assert out["damping"] == "0.2" and out["setDamping"] is None and out["damping2"] == 0.35
+    assert out["badDamping"].startswith("TypeError") and out["damping3"] == 0.35
+    assert out["setRadius"] is None and out["radius"] == 0.25
+    assert out["badRadius"].startswith("ValueError") and out["radius2"] == 0.25
+    assert out["color"] == [1, 0, 0]
+    assert out["picked"] == 1 and out["selection"] == 1 and out["selId"] == 1
+    assert out["inspected"] == ["1", "[Sphere]"]  # the inspector follows the view's selection: body 1
+    assert out["tree"] == ["Engines", "Bodies (2)", "Interactions (0)"]
+
+
+def test_controller_runs_steps_sets_dt_and_runs_commands(tmp_path):
+    out = run(tmp_path, """
+        O.bodies.append(utils.sphere((0, 0, 0), 1))
+        O.engines = [NewtonIntegrator(gravity=(0, 0, -10))]
+        O.dt = 1e-3
+        c = qt.Controller()
+        res = {}
+        c.step(); c.step()
+        res['iter'] = O.iter
+        c.dtEdit.setText('2e-4'); c.applyDt()
+        res['dt'] = O.dt
+        c.dtEdit.setText('fast'); c.applyDt()
+        res['dtBad'] = [O.dt, c.message.text(), c.dtEdit.text()]
+        c.dtEdit.setText('-1'); c.applyDt()
+        res['dtNegative'] = [O.dt, c.message.text()]
+        res['command'] = c.runCommand('O.iter + 40')
+        res['commandError'] = c.runCommand('O.bodies[7]')
+        c.switches['bound'].setChecked(True)
+        res['bound'] = qt.Renderer().bound
+        c.runOrPause()
+        import time; time.sleep(0.2)
+        running = O.running
+        c.runOrPause()
+        res['ran'] = [running, O.running, O.iter > 2]
+        c.refresh()
+        res['labels'] = [c.iterLabel.text(), c.dtState.text(), c.runButton.text()]
+        print(json.dumps(res))
+    """)
+    assert out["iter"] == 2
+    assert out["dt"] == 2e-4
+    assert out["dtBad"][0] == 2e-4 and out["dtBad"][1].startswith("ValueError") and out["dtBad"][2] == "0.0002"
+    assert out["dtNegative"][0] == 2e-4 and out["dtNegative"][1] != ""
+    assert out["command"] == "42"
+    assert out["commandError"].startswith("IndexError")
+    assert out["bound"] is True
+    assert out["ran"] == [True, False, True]
+    assert out["labels"][0].startswith("#") and out["labels"][1] == "(fixed)" and out["labels"][2] == "Run"
