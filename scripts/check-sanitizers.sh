@@ -118,6 +118,10 @@ asan_stage() {
 
     # (1) pytest, the whole suite: deselected tests are listed here with their reason.
     local deselect=(
+        # the windows of the GUI: Qt and Mesa's software OpenGL (not instrumented, with their own leaks at exit)
+        # in processes that load the preloaded runtimes; the C++ the view reads (_displayFrame) is checked by
+        # tests/test_qt_headless.py, which runs here
+        --ignore=tests/test_qt_gui.py
     )
     t0=$(now)
     rc=0

@@ -265,3 +265,49 @@ def test_a_script_in_the_references_gui_style_runs_headless(tmp_path):
                        timeout=120, cwd=str(tmp_path))
     assert r.returncode == 0, r.stderr
     assert "done 50 True True" in r.stdout
+
+
+def test_display_frame_gathers_what_the_view_draws():
+    """_displayFrame (C++, one pass per frame) against the scene, number by number: it needs no display."""
+    import numpy
+    from yade import _yade
+    O.reset()
+    O.bodies.append(utils.sphere((0, 0, 0), 0.5, color=(1, 0, 0)))
+    O.bodies.append(utils.sphere((0.9, 0, 0), 0.5, color=(0, 1, 0), wire=True))
+    f = utils.facet([(0, 0, -1), (1, 0, -1), (0, 1, -1)], color=(0, 0, 1))
+    O.bodies.append(f)
+    O.bodies.append(utils.wall(-2, axis=2, sense=1))
+    O.bodies.append(utils.box((5, 0, 0), (1, 2, 3), orientation=Quaternion((0, 0, 1), 0.5)))
+    O.bodies.append(utils.sphere((9, 9, 9), 1, mask=2))
+    O.bodies.erase(5)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                                 [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator()]
+    O.dt = 1e-6
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # (no Ig2 functor for the box's pairs)
+        O.step()
+    d = _yade._displayFrame()
+    assert list(d['kind']) == [1, 1, 2, 3, 4, 0]
+    assert numpy.allclose(d['pos'][:5], [b.state.pos for b in O.bodies][:5])
+    assert numpy.allclose(d['size'][0], [0.5, 0, 0]) and numpy.allclose(d['size'][3], [2, 1, 0])  # wall: axis, sense
+    assert numpy.allclose(d['size'][4], [1, 2, 3])
+    assert numpy.allclose(d['rot'][4], O.bodies[4].state.ori.toRotationMatrix())
+    assert numpy.allclose(d['color'][:3], [(1, 0, 0), (0, 1, 0), (0, 0, 1)])
+    assert list(d['wire'][:2]) == [False, True]
+    assert d['mask'][5] == 0 and d['mask'][0] == 1
+    assert list(d['facetBody']) == [2]
+    world = [f.state.pos + f.state.ori * v for v in f.shape.vertices]
+    assert numpy.allclose(d['facetCorners'][0], world) and numpy.allclose(d['facetCorners'][0], [(0, 0, -1), (1, 0, -1), (0, 1, -1)])
+    assert numpy.allclose(d['boundMin'][0], O.bodies[0].bound.min) and numpy.isnan(d['boundMin'][5]).all()
+    i = O.interactions[0, 1]
+    assert [sorted(p) for p in d['contactIds'].tolist()] == [[0, 1]]
+    fn = i.phys.normalForce.dot(i.geom.normal)
+    assert fn > 0 and d['contactFn'][0] == pytest.approx(fn, rel=1e-12)  # positive in compression
+    assert sorted(map(sorted, d['pairIds'].tolist())) == sorted(sorted((i.id1, i.id2)) for i in O.interactions.all())
+    assert d['cellHSize'] is None and d['iter'] == 1 and d['time'] == pytest.approx(1e-6)
+    O.periodic = True
+    O.cell.setBox(10, 11, 12)
+    assert numpy.allclose(_yade._displayFrame()['cellHSize'], numpy.diag([10, 11, 12]))
+    O.reset()

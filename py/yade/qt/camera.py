@@ -172,6 +172,7 @@ def sceneBox(frame, median=False):
     lo, hi = allPts.min(axis=0), allPts.max(axis=0)
     if median and sph.sum() > 10:
         c = numpy.median(pos[sph], axis=0)
-        r = numpy.percentile(numpy.linalg.norm(pos[sph] - c, axis=1), 90) + size[sph, 0].max()
+        dist = numpy.linalg.norm(pos[sph] - c, axis=1) + size[sph, 0]
+        r = min(dist.max(), 2 * numpy.percentile(dist, 90))  # (a few far away are left out of the view)
         return c, max(float(r), 1e-9)
     return (lo + hi) / 2, max(float(numpy.linalg.norm(hi - lo) / 2), 1e-9)
