@@ -187,6 +187,37 @@ def test_snapshot_engine_writes_numbered_frames_of_a_script_run_with_x(tmp_path)
     assert out["nowLast"][0] > 150  # and near where it is now
 
 
+@pytest.mark.skipif(not shutil.which("ffmpeg"), reason="ffmpeg is not installed")
+def test_make_video_from_snapshot_engine_frames(tmp_path):
+    out = run(tmp_path, """
+        import subprocess
+        O.bodies.append(utils.sphere((0, 0, 0), 0.5, color=(1, 0, 0)))
+        O.engines = [NewtonIntegrator(gravity=(0, 0, -9.81), damping=0), qt.SnapshotEngine(fileBase='frames/f-', iterPeriod=20, label='snap')]
+        O.dt = 1e-3
+        os.makedirs('frames')
+        v = qt.View()
+        O.run(201, True)
+        a = makeVideo(snap.snapshots, 'movie.avi', fps=10)
+        b = makeVideo('frames/f-%05d.png', 'movie.avi', fps=10)  # renamed: movie-1.avi
+        c = makeVideo('frames/f-*.png', 'movie.avi', fps=10, renameNotOverwrite=False)
+        probe = subprocess.run(['ffprobe', '-v', 'error', '-count_frames', '-select_streams', 'v:0', '-show_entries',
+                                'stream=nb_read_frames,width,height,codec_name', '-of', 'json', 'movie.avi'],
+                               capture_output=True, text=True).stdout
+        errors = []
+        for bad in ('nothing-*.png', ['frames/f-00000.png', 'frames/missing.png']):
+            try:
+                makeVideo(bad, 'x.avi')
+            except ValueError as e:
+                errors.append(str(e))
+        print(json.dumps(dict(frames=len(snap.snapshots), names=[a, b, c], probe=json.loads(probe)['streams'][0], errors=errors)))
+    """, launcher=True)
+    assert out["frames"] == 10
+    assert out["names"] == ["movie.avi", "movie-1.avi", "movie.avi"]
+    p = out["probe"]
+    assert p["codec_name"] == "mpeg4" and int(p["nb_read_frames"]) == 10 and (p["width"], p["height"]) == (550, 550)
+    assert "no frames match" in out["errors"][0] and "do not exist" in out["errors"][1]
+
+
 def test_inspector_shows_and_edits_attributes_and_refuses_bad_values(tmp_path):
     out = run(tmp_path, """
         O.bodies.append([utils.sphere((0, 0, 0), 1), utils.sphere((3, 0, 0), 1)])
@@ -263,3 +294,28 @@ def test_controller_runs_steps_sets_dt_and_runs_commands(tmp_path):
     assert out["bound"] is True
     assert out["ran"] == [True, False, True]
     assert out["labels"][0].startswith("#") and out["labels"][1] == "(fixed)" and out["labels"][2] == "Run"
+
+
+def test_live_plot_follows_a_run_while_the_script_waits(tmp_path):
+    out = run(tmp_path, """
+        import time
+        from yade import plot
+        O.bodies.append(utils.sphere((0, 0, 0), 1))
+        O.engines = [NewtonIntegrator(gravity=(0, 0, -10)), PyRunner(command='plot.addData(i=O.iter, z=O.bodies[0].state.pos[2])', iterPeriod=1)]
+        O.dt = 1e-3
+        plot.plots = {'i': ('z',)}
+        plot.liveInterval = 0.05
+        O.run(5, True)
+        plot.plot()
+        fig = plot._liveFigures[0]
+        before = len(fig._yadeLines[0][0].get_xdata())
+        O.engines = O.engines + [PyRunner(command='time.sleep(0.002)', iterPeriod=1)]
+        t0 = time.time()
+        O.run(300, True)  # about a second, the main thread waiting in C++
+        lines = fig._yadeLines[0][0]
+        print(json.dumps(dict(before=before, after=len(lines.get_xdata()), records=len(plot.data['i']),
+                              wall=time.time() - t0, backend=__import__('matplotlib').get_backend())))
+    """, launcher=True)
+    assert "qt" in out["backend"].lower()
+    assert out["before"] < 10 and out["records"] > 300
+    assert out["after"] > 100  # the figure was redrawn during the run, not only before it (a few points then)

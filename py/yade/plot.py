@@ -579,9 +579,15 @@ _NON_INTERACTIVE = ('agg', 'cairo', 'pdf', 'pgf', 'ps', 'svg', 'template')
 
 
 def _pyplot():
-    """Import matplotlib.pyplot; without a display select the Agg backend first."""
+    """Import matplotlib.pyplot; without a display select the Agg backend first; with the GUI's windows
+    (yade.qt) Qt5Agg, unless a backend was chosen already (MPLBACKEND, an earlier import)."""
     import matplotlib
     if _displayAvailable():
+        if 'matplotlib.pyplot' not in sys.modules and not os.environ.get('MPLBACKEND'):
+            from yade import qt
+            if qt.noView == '':  # the figures in the windows' own Qt loop, as the reference's
+                qt._application()
+                matplotlib.use('Qt5Agg')
         import matplotlib.pyplot as plt
     elif 'matplotlib.pyplot' not in sys.modules:
         matplotlib.use('Agg')
@@ -645,6 +651,9 @@ def _updateFigure(fig):
     fig.canvas.draw_idle()
 
 
+_liveFigures = []
+
+
 def _startLive(fig):
     if not live:
         return
@@ -653,8 +662,27 @@ def _startLive(fig):
         timer.add_callback(_updateFigure, fig)
         timer.start()
         fig._yadeTimer = timer
+        _liveFigures.append(fig)
+        import yade.qt  # noqa: F401  (O.run(n, True) and O.wait() then give the figures their turn: _pumpLive)
     except Exception:
         pass
+
+
+def _pumpLive():
+    """Lets the live figures update and answer the mouse (their timers fire) while the main thread waits for
+    a run (yade.qt._whileWaiting); False when none is open."""
+    if not _liveFigures:
+        return False
+    import matplotlib.pyplot as plt
+    for fig in list(_liveFigures):
+        try:
+            if not plt.fignum_exists(fig.number):
+                _liveFigures.remove(fig)
+                continue
+            fig.canvas.flush_events()
+        except Exception:
+            _liveFigures.remove(fig)
+    return bool(_liveFigures)
 
 
 def createPlots(subPlots=True, rows=None):

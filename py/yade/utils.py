@@ -6,6 +6,7 @@ import random
 from ._yade import O, Body, Sphere, Facet, Wall, Box, Aabb, State, FrictMat, Material, Vector3, Quaternion
 from ._yade import PWaveTimeStep, unbalancedForce, kineticEnergy, getSpheresVolume, getSpheresMass, Matrix3
 from ._yade import createInteraction  # noqa: F401 (a utils function written in C++)
+from ._video import makeVideo, encodeVideoFromFrames  # noqa: F401
 
 __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMaterial', 'randomColor', 'PWaveTimeStep',
            'unbalancedForce', 'kineticEnergy', 'getSpheresVolume', 'aabbExtrema', 'avgNumInteractions', 'porosity',
@@ -14,7 +15,7 @@ __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMa
            'angularMomentum', 'maxOverlapRatio', 'numIntrsOfEachBody', 'intrsOfEachBody', 'getBodyIdsContacts', 'psd', 'setRefSe3',
            'shiftBodies', 'calm', 'randomizeColors', 'highlightNone', 'wireAll', 'wireNone', 'wireNoSpheres', 'setBodyPosition',
            'setBodyVelocity', 'setBodyAngularVelocity', 'setBodyOrientation', 'setBodyColor', 'runningInBatch', 'replaceCollider',
-           'facetBox', 'facetCylinder']
+           'facetBox', 'facetCylinder', 'makeVideo', 'encodeVideoFromFrames']
 
 
 def typedEngine(name):

@@ -213,10 +213,16 @@ def _takeSnapshot(file, format, timeout):
 
 
 def _whileWaiting():
-    """The GUI's turn while O.run(n, True) or O.wait() waits (called from C++): draws and saves what is due.
-    False when there is nothing to do any more."""
-    if noView or not _views and _controller is None and _inspector is None:
-        return False
+    """The GUI's turn while O.run(n, True) or O.wait() waits (called from C++): draws the windows, saves the
+    snapshots asked for, updates live plots (yade.plot). False when there is nothing to do any more."""
+    import sys
+    plot = sys.modules.get('yade.plot')
+    plots = plot._pumpLive() if plot is not None else False
+    if noView:
+        return plots
+    from PyQt5 import QtWidgets
+    if QtWidgets.QApplication.instance() is None:
+        return plots
     _processEvents()
     return True
 
