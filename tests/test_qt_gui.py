@@ -319,3 +319,40 @@ def test_live_plot_follows_a_run_while_the_script_waits(tmp_path):
     assert "qt" in out["backend"].lower()
     assert out["before"] < 10 and out["records"] > 300
     assert out["after"] > 100  # the figure was redrawn during the run, not only before it (a few points then)
+
+
+def test_launcher_prompt_opens_the_controller_and_f11_f12_keys_open_windows(tmp_path):
+    """./yade without -x: the prompt with the controller open (the manual: started automatically), F11 a view."""
+    import pty
+    import select
+    import time
+    pid, fd = pty.fork()
+    if pid == 0:
+        os.environ["XDG_RUNTIME_DIR"] = str(tmp_path)
+        os.execvp("xvfb-run", ["xvfb-run", "-a", os.path.join(ROOT, "yade")])
+    out = b""
+
+    def readUntil(token, limit=60):
+        nonlocal out
+        end = time.time() + limit
+        while time.time() < end and token not in out:
+            r, _, _ = select.select([fd], [], [], 0.1)
+            if r:
+                try:
+                    out += os.read(fd, 65536)
+                except OSError:
+                    return
+    try:
+        readUntil(b"Yade [")  # (the prompt; its number comes in another color)
+        os.write(fd, b"\x1b[23~")  # F11
+        time.sleep(1)
+        os.write(fd, b"import yade.qt; print('WINDOWS', len(yade.qt.views()), yade.qt._controller is not None, 'END')\r")
+        readUntil(b"WINDOWS 1 True END", 30)
+        os.write(fd, b"exit()\r")
+    finally:
+        try:
+            os.kill(pid, 9)
+        except OSError:
+            pass
+        os.waitpid(pid, 0)
+    assert b"WINDOWS 1 True END" in out, out.decode(errors="replace")[-2000:]
