@@ -356,3 +356,34 @@ def test_launcher_prompt_opens_the_controller_and_f11_f12_keys_open_windows(tmp_
             pass
         os.waitpid(pid, 0)
     assert b"WINDOWS 1 True END" in out, out.decode(errors="replace")[-2000:]
+
+
+def test_view_follows_a_background_run(tmp_path):
+    """O.run() in the background while the view draws: each frame pauses the loop at the end of a step to take
+    its arrays (never in the middle of one), and the run goes on."""
+    out = run(tmp_path, """
+        import time
+        O.bodies.append([utils.sphere((i, 0, 0), 0.45) for i in range(200)])
+        O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                     [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                     NewtonIntegrator(gravity=(0, 0, -1), damping=0)]
+        O.dt = 1e-4
+        v = qt.View()
+        O.run()
+        iters = []
+        t0 = time.time()
+        while time.time() - t0 < 1.5:
+            v._widget.renderFrame()
+            iters.append(int(v._widget.frame['iter']))
+            qt._processEvents()
+        running = O.running
+        O.pause()
+        z = O.bodies[0].state.pos[2]
+        print(json.dumps(dict(iters=iters, running=running, iter=O.iter, z=z, t=O.time)))
+    """)
+    iters = out["iters"]
+    assert out["running"] and len(iters) >= 5
+    assert iters == sorted(iters) and iters[-1] > iters[0]  # frames of later and later steps
+    n = out["iter"]
+    assert out["z"] == pytest.approx(-1e-8 * n * (n + 1) / 2, rel=1e-9)  # the leapfrog's free fall: every step whole
