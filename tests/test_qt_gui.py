@@ -387,3 +387,41 @@ def test_view_follows_a_background_run(tmp_path):
     assert iters == sorted(iters) and iters[-1] > iters[0]  # frames of later and later steps
     n = out["iter"]
     assert out["z"] == pytest.approx(-1e-8 * n * (n + 1) / 2, rel=1e-9)  # the leapfrog's free fall: every step whole
+
+
+def test_stripes_axes_grid_and_ids(tmp_path):
+    out = run(tmp_path, """
+        O.bodies.append(utils.sphere((0, 0, 0), 1, color=(1, 0, 0)))
+        v = qt.View()
+        v.eyePosition = (0, 0, 10)
+        def reds(img):  # the red channel over a ring of points inside the sphere's disk
+            (cx, cy), (ex, ey) = projected(v, [(0, 0, 0), (0.6, 0, 0)])
+            r = ex - cx
+            import math
+            return [pixel(img, cx + r * math.cos(a / 24 * 2 * math.pi), cy + r * math.sin(a / 24 * 2 * math.pi))[0] for a in range(24)]
+        v.saveSnapshot('plain.png')
+        Gl1_Sphere.stripes = True
+        v.saveSnapshot('stripes.png')
+        Gl1_Sphere.stripes = False
+        v.axes = True
+        v.grid = (False, False, True)
+        v.saveSnapshot('axes.png')
+        (ax, ay), = projected(v, [(0.8 * v.sceneRadius, 0, 0)])
+        (gx, gy), = projected(v, [(-v.sceneRadius, 0.5 * v.sceneRadius, 0)])
+        v.axes, v.grid = False, (False, False, False)
+        qt.Renderer().id = True
+        v.saveSnapshot('ids.png')
+        (cx, cy), = projected(v, [(0, 0, 0)])
+        ids = QImage('ids.png'); plain = QImage('plain.png')
+        idPixels = sum(pixel(ids, cx + dx, cy + dy) != pixel(plain, cx + dx, cy + dy) for dx in range(-6, 7) for dy in range(-12, 3))
+        print(json.dumps(dict(plain=reds(QImage('plain.png')), stripes=reds(QImage('stripes.png')),
+                              axis=max((pixel(QImage('axes.png'), ax, ay + d) for d in (-1, 0, 1)), key=lambda c: c[0]),
+                              grid=max((pixel(QImage('axes.png'), gx + d, gy) for d in (-1, 0, 1)), key=sum), idPixels=idPixels)))
+    """)
+    plain, stripes = out["plain"], out["stripes"]
+    # sectors alternate round the ring: some as without stripes, some darker
+    assert sum(s < 0.8 * p for s, p in zip(stripes, plain)) >= 6
+    assert sum(abs(s - p) <= 0.1 * p for s, p in zip(stripes, plain)) >= 6
+    assert out["axis"][0] > 200 and out["axis"][1] < 60  # the x axis, red
+    assert out["grid"][0] == out["grid"][1] == out["grid"][2] and out["grid"][0] > 100  # a grey grid line
+    assert out["idPixels"] > 5  # "0" written at the sphere's centre

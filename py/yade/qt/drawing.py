@@ -3,7 +3,8 @@ no Python loop over bodies or contacts, one draw call per kind of thing.
 
 - spheres: one screen-facing square per sphere (instanced, front to back), in which the fragment shader
   intersects the view ray with the sphere and shades the hit point: a round, lit sphere of any size for two
-  triangles (Gl1_Sphere.wire: a circle outline instead). Its depth is that of its front point, so a sphere
+  triangles (Gl1_Sphere.wire: a circle outline instead; Gl1_Sphere.stripes: sectors that turn with the
+  sphere). Its depth is that of its front point, so a sphere
   cut by a facet, or two spheres overlapping by much, show the nearer one whole;
 - facets and boxes: lit triangles (wire: their edges);
 - walls: a grid of Gl1_Wall.div lines; bounds, the periodic cell, every pair (intrAllWire): lines;
@@ -39,11 +40,15 @@ layout(location = 0) in vec2 corner;
 layout(location = 1) in vec3 center;
 layout(location = 2) in float radius;
 layout(location = 3) in vec3 color;
+layout(location = 4) in vec3 axis0;
+layout(location = 5) in vec3 axis1;
+layout(location = 6) in vec3 axis2;
 uniform mat4 view, proj; uniform float ortho;
-out vec3 vCenter; out float vRadius; out vec3 vColor; out vec3 vPos;
+out vec3 vCenter; out float vRadius; out vec3 vColor; out vec3 vPos; flat out mat3 vToBody;
 void main() {
     vec4 c = view * vec4(center, 1.0);
     vCenter = c.xyz; vRadius = radius; vColor = color;
+    vToBody = transpose(mat3(view) * mat3(axis0, axis1, axis2));  // view → the body's own axes (stripes)
     // a square facing the eye at the sphere's front, just large enough to hold its outline (in perspective a
     // sphere looks wider than its radius: by d/sqrt(d²-r²) at distance d, plus a margin off the axis); drawn
     // front to back, hidden spheres fail the depth test before their pixels are shaded
@@ -57,8 +62,8 @@ void main() {
 """
 
 _SPHERE_FS = """#version 330 core
-in vec3 vCenter; in float vRadius; in vec3 vColor; in vec3 vPos;
-uniform mat4 proj; uniform float ortho; uniform float wire;
+in vec3 vCenter; in float vRadius; in vec3 vColor; in vec3 vPos; flat in mat3 vToBody;
+uniform mat4 proj; uniform float ortho; uniform float wire; uniform float stripes;
 out vec4 fragColor;
 """ + _LIGHTING + """
 void main() {
@@ -74,7 +79,13 @@ void main() {
     if (wire > 0.5 && abs(dot(n, -dir)) > 0.25) discard;  // the outline only
     // (the depth is the square's, at the sphere's front: writing each pixel's own depth would make the depth
     // test late and the frame 1.5-2 times slower in software rendering)
-    fragColor = vec4(wire > 0.5 ? vColor : shade(vColor, n, -dir), 1.0);
+    vec3 color = vColor;
+    if (stripes > 0.5) {  // Gl1_Sphere.stripes: 12 sectors about the body's z axis, the two halves alternating
+        vec3 b = vToBody * n;
+        bool sector = sin(6.0 * atan(b.y, b.x)) > 0.0;
+        if (sector != (b.z > 0.0)) color *= 0.55;
+    }
+    fragColor = vec4(wire > 0.5 ? vColor : shade(color, n, -dir), 1.0);
 }
 """
 
@@ -151,7 +162,7 @@ class SceneDrawer:
     def __init__(self):
         self.sphereProg = _compile(_SPHERE_VS, _SPHERE_FS)
         self.meshProg = _compile(_MESH_VS, _MESH_FS)
-        self.spheres = _Buffers(4)
+        self.spheres = _Buffers(7)
         self.triangles = _Buffers(3)
         self.lines = _Buffers(3)
 
@@ -185,8 +196,10 @@ class SceneDrawer:
         for name, x in extra:
             f(name, x)
 
-    def draw(self, frame, camera, width, height, renderer, selection=-1):
-        """Draws the frame into the current framebuffer (width × height pixels)."""
+    def draw(self, frame, camera, width, height, renderer, selection=-1, axes=False, grid=(False, False, False)):
+        """Draws the frame into the current framebuffer (width × height pixels); axes and grid: the view's
+        (GLViewer.axes: x, y, z in red, green, blue from the scene's center; GLViewer.grid: the planes yz, zx, xy
+        through it)."""
         bg = renderer.bgColor
         GL.glViewport(0, 0, width, height)
         GL.glClearColor(float(bg[0]), float(bg[1]), float(bg[2]), 1.0)
@@ -216,6 +229,11 @@ class SceneDrawer:
             tris.append(self._forceChains(frame, pos, camera))
         if frame.get('cellHSize') is not None:
             lines.append(self._cell(numpy.asarray(frame['cellHSize']), renderer.cellColor))
+        if axes:
+            lines.append(self._axes(camera))
+        for normal, on in enumerate(grid):
+            if on:
+                lines.append(self._grid(camera, normal))
         tris = [t for t in tris if t is not None and len(t[0])]
         lines = [t for t in lines if t is not None and len(t[0])]
         if tris:
@@ -240,10 +258,12 @@ class SceneDrawer:
             if not n:
                 continue
             corners = numpy.array([[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]], dtype=numpy.float32)
-            self._uniforms(self.sphereProg, camera, aspect, renderer, (('wire', wire),))
+            self._uniforms(self.sphereProg, camera, aspect, renderer, (('wire', wire), ('stripes', wrapper.Gl1_Sphere.stripes)))
             idx = numpy.nonzero(sel)[0]
             idx = idx[numpy.argsort((pos[idx] - camera.eye) @ camera.viewDir, kind='stable')]  # front to back
-            self.spheres.fill([corners, pos[idx], frame['size'][idx, 0], color[idx]], divisors=[0, 1, 1, 1])
+            R = frame['rot'][idx]
+            self.spheres.fill([corners, pos[idx], frame['size'][idx, 0], color[idx], R[:, :, 0], R[:, :, 1], R[:, :, 2]],
+                              divisors=[0, 1, 1, 1, 1, 1, 1])
             GL.glDrawArraysInstanced(GL.GL_TRIANGLES, 0, 6, n)
 
     def _facets(self, frame, color, shown, renderer, lines):
@@ -345,6 +365,29 @@ class SceneDrawer:
         rgb = numpy.repeat(numpy.c_[t, 0.2 * numpy.ones_like(t), 1 - t], 6, axis=0)
         normals = numpy.tile(-camera.viewDir, (len(quads), 1))
         return quads, normals, rgb
+
+    @staticmethod
+    def _axes(camera):
+        c, r = camera.sceneCenter, camera.sceneRadius
+        p = numpy.array([c, c + (r, 0, 0), c, c + (0, r, 0), c, c + (0, 0, r)])
+        return p, numpy.repeat(numpy.eye(3), 2, axis=0)
+
+    @staticmethod
+    def _grid(camera, normal, div=10):
+        """A square grid of div cells each way in the plane through the scene's center across axis `normal`."""
+        c, r = camera.sceneCenter, camera.sceneRadius
+        u, v = (normal + 1) % 3, (normal + 2) % 3
+        t = numpy.linspace(-r, r, div + 1)
+        pts = []
+        for a, b in ((u, v), (v, u)):
+            p0 = numpy.tile(c, (div + 1, 1))
+            p0[:, a] += t
+            p1 = p0.copy()
+            p0[:, b] -= r
+            p1[:, b] += r
+            pts.append(numpy.stack([p0, p1], axis=1).reshape(-1, 3))
+        p = numpy.concatenate(pts)
+        return p, numpy.tile([0.5, 0.5, 0.5], (len(p), 1))
 
     def _cell(self, H, rgb):
         corners = ((self._CUBE + 1) / 2) @ H.T

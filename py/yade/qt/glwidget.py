@@ -25,6 +25,7 @@ def surfaceFormat():
 
 class ViewWidget(QtWidgets.QOpenGLWidget):
     refreshMs = 100  # redraw period while the scene changes
+    maxIds = 2000  # OpenGLRenderer.id writes the ids of this many bodies at most
 
     def __init__(self, renderer, title):
         super().__init__()
@@ -58,12 +59,13 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
         ratio = self.devicePixelRatioF()
         w, h = int(self.width() * ratio), int(self.height() * ratio)
         selection = self.viewer.selection if self.viewer is not None else -1
-        self.drawer.draw(frame, self.viewer._camera, w, h, self.renderer, selection)
+        v = self.viewer
+        self.drawer.draw(frame, v._camera, w, h, self.renderer, selection, axes=v.axes, grid=v.grid)
         self._overlay(frame)
         self.drawTimes = (self.drawTimes + [time.perf_counter() - t0])[-20:]
 
     def _overlay(self, frame):
-        """The time display (GLViewer.timeDisp: r real time, v virtual time, i iteration) and the fps."""
+        """The time display (GLViewer.timeDisp: r real time, v virtual time, i iteration), the fps, the ids."""
         if self.viewer is None:
             return
         lines = []
@@ -78,6 +80,13 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
         if self.viewer.fps and self.drawTimes:
             lines.append('%.1f fps' % (1 / max(numpy.mean(self.drawTimes), 1e-6)))
         painter = QtGui.QPainter(self)
+        if self.renderer.id:  # the bodies' ids at their centres (the first maxIds)
+            shown = numpy.nonzero(frame['kind'] != 0)[0][:self.maxIds]
+            if len(shown):
+                xy = self.viewer._camera.project(frame['pos'][shown], self.width(), self.height())
+                painter.setPen(QtGui.QColor(255, 255, 255))
+                for i, (x, y) in zip(shown, xy):
+                    painter.drawText(int(x), int(y), str(i))
         painter.setPen(QtGui.QColor(0, 200, 200))
         y = self.height() - 8 - 14 * (len(lines) - 1)
         for line in lines:
