@@ -34,6 +34,7 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
         self.renderer = renderer
         self.viewer = None
         self.drawer = None
+        self.drawError = 'the 3D view has not been drawn yet'
         self.frame = None        # the last frame drawn (for picking)
         self.frameOverride = None  # a frame to draw instead of the scene's current one (snapshots)
         self.lastMouse = None
@@ -50,9 +51,21 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
 
     # --- drawing
     def initializeGL(self):
-        self.drawer = SceneDrawer()
+        try:
+            self.drawer = SceneDrawer()
+        except Exception as e:  # e.g. no OpenGL 3.3 (an old driver, X forwarded over ssh): said, not fatal
+            self.drawError = 'the 3D view cannot draw: %s' % e
+            import warnings
+            warnings.warn('yade.qt: ' + self.drawError, RuntimeWarning)
 
     def paintGL(self):
+        if self.drawer is None:
+            painter = QtGui.QPainter(self)
+            painter.fillRect(self.rect(), QtGui.QColor(51, 51, 51))
+            painter.setPen(QtGui.QColor(255, 255, 255))
+            painter.drawText(self.rect(), QtCore.Qt.AlignCenter | QtCore.Qt.TextWordWrap, self.drawError)
+            painter.end()
+            return
         t0 = time.perf_counter()
         frame = self.frameOverride if self.frameOverride is not None else _yade._displayFrame()
         self.frame = frame
