@@ -2,7 +2,7 @@
 """Run the reference Yade's example scripts here (and, with --reference, in the reference too) and report,
 script by script, where each stops: the first error, or none within the time limit.
 
-    /usr/bin/python3 scripts/examples_sweep.py [--timeout 10] [--reference] [--only SUBSTRING] [--grep REGEX] [--cpu 1]
+    /usr/bin/python3 scripts/examples_sweep.py [--timeout 10] [--reference] [--only SUBSTRING] [--grep REGEX] [--gui] [--cpu 1]
 
 The examples come with the reference's documentation package (yade-doc, /usr/share/doc/yade/examples);
 they are copied to a scratch folder first (many write files beside themselves) and each runs from its own
@@ -25,9 +25,9 @@ EXAMPLES = "/usr/share/doc/yade/examples"
 ERROR_RE = re.compile(r"^([A-Za-z_][A-Za-z_.]*(Error|Exception|Interrupt))(:.*)?$")
 
 
-def stopper(binary, folder, script, timeout, cpu):
+def stopper(binary, folder, script, timeout, cpu, gui=False):
     """'' when the script ran (or was still running at the limit without an error), else its last error line."""
-    cmd = ["taskset", "-c", str(cpu), binary, "-n", "-x", "-j1", script]
+    cmd = ["taskset", "-c", str(cpu), binary] + ([] if gui else ["-n"]) + ["-x", "-j1", script]
     try:
         p = subprocess.run(cmd, cwd=folder, stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=timeout,
                            errors="replace")
@@ -58,6 +58,8 @@ def main(argv=None):
     ap.add_argument("--only", default="", help="only the scripts whose path contains this")
     ap.add_argument("--grep", default="", help="only the scripts whose text matches this regular expression "
                     "(e.g. 'yade import .*qt' for those that open a view)")
+    ap.add_argument("--gui", action="store_true", help="run without -n, so that scripts open their windows (under a "
+                    "display: e.g. xvfb-run -a -s '-screen 0 1280x1024x24' python3 scripts/examples_sweep.py --gui)")
     ap.add_argument("--cpu", type=int, default=0)
     a = ap.parse_args(argv)
     if not os.path.isdir(EXAMPLES):
@@ -81,7 +83,8 @@ def main(argv=None):
             if a.grep:
                 scripts = [s for s in scripts if re.search(a.grep, open(os.path.join(copy, s), errors="replace").read())]
             for s in scripts:
-                results[name][s] = stopper(binary, os.path.join(copy, os.path.dirname(s)), os.path.basename(s), a.timeout, a.cpu)
+                results[name][s] = stopper(binary, os.path.join(copy, os.path.dirname(s)), os.path.basename(s), a.timeout, a.cpu,
+                                           a.gui)
                 print("%-9s %-70s %s" % (name, s, results[name][s] or "ran"), flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
