@@ -206,7 +206,7 @@ class SceneDrawer:
         GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
         GL.glEnable(GL.GL_DEPTH_TEST)
         aspect = width / max(height, 1)
-        kind, pos, size, color = frame['kind'], frame['pos'].copy(), frame['size'], frame['color'].copy()
+        pos, color = frame['pos'].copy(), frame['color'].copy()
         shown = (frame['mask'] & renderer.mask) != 0
         if frame.get('cellHSize') is not None:  # bodies wrapped into the periodic cell
             H = numpy.asarray(frame['cellHSize'])
