@@ -150,7 +150,7 @@ def test_the_view_keeps_camera_settings_and_refuses_bad_ones():
         v = qt.View()
         qt.View().close()
     assert all(issubclass(x.category, UserWarning) for x in w)
-    assert v in qt.views() and len(qt.views()) == 1 + sum(1 for x in qt.views() if x is not v)
+    assert v in qt.views()
     # the reference's defaults for a fresh view
     assert tuple(v.viewDir) == (0, 0, -1) and tuple(v.upVector) == (0, 1, 0) and v.ortho is False
     assert tuple(v.screenSize) == (550, 550) and v.sceneRadius == 1.5 and v.timeDisp == 'rvi' and v.selection == -1
