@@ -425,3 +425,19 @@ def test_stripes_axes_grid_and_ids(tmp_path):
     assert out["axis"][0] > 200 and out["axis"][1] < 60  # the x axis, red
     assert out["grid"][0] == out["grid"][1] == out["grid"][2] and out["grid"][0] > 100  # a grey grid line
     assert out["idPixels"] > 5  # "0" written at the sphere's centre
+
+
+def test_a_shape_no_drawing_functor_draws_is_named_once(tmp_path):
+    out = run(tmp_path, """
+        import warnings
+        O.bodies.append([Body(shape=Shape(), state=State()), utils.sphere((0, 0, 0), 1, color=(1, 0, 0))])
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter('always')
+            v = qt.View()
+            v.saveSnapshot('a.png')
+            v.saveSnapshot('b.png')
+        (x, y), = projected(v, [(0, 0, 0)])
+        print(json.dumps(dict(messages=[str(m.message) for m in w], red=pixel(QImage('b.png'), x, y))))
+    """)
+    assert out["messages"] == ["yade.qt: no drawing functor draws Shape bodies (a Gl1_Shape class); they are not drawn"]
+    assert out["red"][0] > 150  # the others are drawn

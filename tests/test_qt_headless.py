@@ -290,7 +290,10 @@ def test_display_frame_gathers_what_the_view_draws():
         warnings.simplefilter("ignore")  # (no Ig2 functor for the box's pairs)
         O.step()
     d = _yade._displayFrame()
-    assert list(d['kind']) == [1, 1, 2, 3, 4, 0]
+    names = list(d['drawers'])
+    assert {'Gl1_Sphere', 'Gl1_Facet', 'Gl1_Wall', 'Gl1_Box'} <= set(names)
+    assert [names[k] if k >= 0 else k for k in d['drawer']] == ['Gl1_Sphere', 'Gl1_Sphere', 'Gl1_Facet', 'Gl1_Wall', 'Gl1_Box', -1]
+    assert d['undrawn'] == set()
     assert numpy.allclose(d['pos'][:5], [b.state.pos for b in O.bodies][:5])
     assert numpy.allclose(d['size'][0], [0.5, 0, 0]) and numpy.allclose(d['size'][3], [2, 1, 0])  # wall: axis, sense
     assert numpy.allclose(d['size'][4], [1, 2, 3])
@@ -298,9 +301,9 @@ def test_display_frame_gathers_what_the_view_draws():
     assert numpy.allclose(d['color'][:3], [(1, 0, 0), (0, 1, 0), (0, 0, 1)])
     assert list(d['wire'][:2]) == [False, True]
     assert d['mask'][5] == 0 and d['mask'][0] == 1
-    assert list(d['facetBody']) == [2]
+    assert list(d['triangleBody']) == [2]
     world = [f.state.pos + f.state.ori * v for v in f.shape.vertices]
-    assert numpy.allclose(d['facetCorners'][0], world) and numpy.allclose(d['facetCorners'][0], [(0, 0, -1), (1, 0, -1), (0, 1, -1)])
+    assert numpy.allclose(d['triangleCorners'][0], world) and numpy.allclose(d['triangleCorners'][0], [(0, 0, -1), (1, 0, -1), (0, 1, -1)])
     assert numpy.allclose(d['boundMin'][0], O.bodies[0].bound.min) and numpy.isnan(d['boundMin'][5]).all()
     i = O.interactions[0, 1]
     assert [sorted(p) for p in d['contactIds'].tolist()] == [[0, 1]]
@@ -311,4 +314,11 @@ def test_display_frame_gathers_what_the_view_draws():
     O.periodic = True
     O.cell.setBox(10, 11, 12)
     assert numpy.allclose(_yade._displayFrame()['cellHSize'], numpy.diag([10, 11, 12]))
+    # a shape class no drawing functor draws is named; a clump is drawn as its members
+    O.reset()
+    O.bodies.append(Body(shape=Shape(), state=State()))
+    cid, ids = O.bodies.appendClumped([utils.sphere((0, 0, 0), 1), utils.sphere((1, 0, 0), 1)])
+    d = _yade._displayFrame()
+    assert d['undrawn'] == {'Shape'} and d['drawer'][0] == -1 and d['drawer'][cid] == -2
+    assert all(d['drawers'][d['drawer'][i]] == 'Gl1_Sphere' for i in ids)
     O.reset()

@@ -13,6 +13,10 @@ public:
         GlShapeFunctor::visit(v);
         v.attr("normals", normals, "Also draw each facet's normal and its edges' normals", Attr::classWide);
     }
+    void gather(const Shape& s, const State& st, DisplayItem& d) const override {
+        const Matrix3r R = st.ori().toRotationMatrix();
+        for (const Vector3r& v : static_cast<const Facet&>(s).vertices) d.triangles->push_back(st.pos() + R * v);
+    }
 };
 
 } // namespace yade

@@ -24,6 +24,7 @@ public:
         v.attr("circleRelThickness", circleRelThickness, "Thickness of the circles of circleView, relative to the radius", Attr::classWide | Attr::positive);
         v.attr("circleAllowedRotationAxis", circleAllowedRotationAxis, "Axis ('x', 'y' or 'z') about which circleView's circles turn", Attr::classWide);
     }
+    void gather(const Shape& s, const State&, DisplayItem& d) const override { d.size[0] = static_cast<const Sphere&>(s).radius; }
 };
 
 } // namespace yade

@@ -13,6 +13,10 @@ public:
         GlShapeFunctor::visit(v);
         v.attr("div", div, "Number of grid lines along each side", Attr::classWide | Attr::positive);
     }
+    void gather(const Shape& s, const State&, DisplayItem& d) const override {
+        const Wall& w = static_cast<const Wall&>(s);
+        d.size = Vector3r(w.axis, w.sense, 0);
+    }
 };
 
 } // namespace yade

@@ -148,18 +148,19 @@ def sceneBox(frame, median=False):
     """Center and radius of what the frame holds (walls, which are infinite, left out); median=True centers
     on the bodies' median position, as the reference's center(median=True) does, so that a few bodies far
     away do not shrink the rest."""
-    kind, pos, size = frame['kind'], frame['pos'], frame['size']
+    from yade.qt.drawing import drawnBy
+    pos, size = frame['pos'], frame['size']
     pts = []
-    sph = kind == 1
+    sph = drawnBy(frame, 'Gl1_Sphere')
     if sph.any():
         r = size[sph, 0:1]
         pts += [pos[sph] - r, pos[sph] + r]
-    box = kind == 4
+    box = drawnBy(frame, 'Gl1_Box')
     if box.any():
         e = numpy.linalg.norm(size[box], axis=1)[:, None]
         pts += [pos[box] - e, pos[box] + e]
-    if len(frame['facetCorners']):
-        pts.append(frame['facetCorners'].reshape(-1, 3))
+    if len(frame['triangleCorners']):
+        pts.append(frame['triangleCorners'].reshape(-1, 3))
     if frame.get('cellHSize') is not None:
         H = numpy.asarray(frame['cellHSize'])
         pts.append(numpy.array([[0, 0, 0], H[:, 0] + H[:, 1] + H[:, 2]]))

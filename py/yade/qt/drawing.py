@@ -1,5 +1,7 @@
 """Draws one frame of the scene with OpenGL 3.3 (core profile), from the arrays of _yade._displayFrame():
-no Python loop over bodies or contacts, one draw call per kind of thing.
+no Python loop over bodies or contacts, one draw call per kind of thing. Each body is drawn by the drawer of
+the drawing functor its shape's class chose (_SHAPE_DRAWERS, at the end: Gl1_Sphere, Gl1_Facet, Gl1_Box,
+Gl1_Wall); a shape class no functor draws is reported once by name.
 
 - spheres: one screen-facing square per sphere (instanced, front to back), in which the fragment shader
   intersects the view ray with the sphere and shades the hit point: a round, lit sphere of any size for two
@@ -20,7 +22,24 @@ from OpenGL import GL
 
 from yade import wrapper
 
-KIND_SPHERE, KIND_FACET, KIND_WALL, KIND_BOX = 1, 2, 3, 4
+
+
+def drawnBy(frame, functor):
+    """Which bodies of the frame the drawing functor `functor` (a Gl1_* class name) draws (a boolean mask)."""
+    names = list(frame['drawers'])
+    if functor not in names:
+        return numpy.zeros(len(frame['drawer']), bool)
+    return frame['drawer'] == names.index(functor)
+
+
+_warned = set()
+
+
+def _warnOnce(message):
+    if message not in _warned:
+        _warned.add(message)
+        import warnings
+        warnings.warn(message, RuntimeWarning)
 
 _LIGHTING = """
 uniform vec3 lightDir1, lightDir2, lightColor1, lightColor2;
@@ -216,11 +235,18 @@ class SceneDrawer:
             color[selection] = numpy.clip(color[selection] * 0.5 + 0.5, 0, 1)
         color[frame['highlight']] = numpy.clip(color[frame['highlight']] * 0.5 + 0.5, 0, 1)
         tris, lines = [], []  # (positions, normals, colors) per group
-        if renderer.shape:
-            self._spheres(frame, pos, color, shown, camera, aspect, renderer)
-            tris.append(self._facets(frame, color, shown, renderer, lines))
-            tris.append(self._boxes(frame, pos, color, shown, renderer, lines))
-            lines.append(self._walls(frame, pos, color, shown, camera))
+        if renderer.shape:  # each body by the drawer of its drawing functor (_SHAPE_DRAWERS, below)
+            for name in frame['undrawn']:
+                _warnOnce("yade.qt: no drawing functor draws %s bodies (a Gl1_%s class); they are not drawn" % (name, name))
+            for number, name in enumerate(frame['drawers']):
+                sel = (frame['drawer'] == number) & shown
+                if not sel.any():
+                    continue
+                drawer = _SHAPE_DRAWERS.get(name)
+                if drawer is None:
+                    _warnOnce("yade.qt: %s has no drawer in yade/qt/drawing.py; its bodies are not drawn" % name)
+                    continue
+                drawer(self, frame, sel, pos, color, camera, aspect, renderer, tris, lines)
         if renderer.bound:
             lines.append(self._bounds(frame, shown))
         if renderer.intrAllWire:
@@ -248,60 +274,56 @@ class SceneDrawer:
         GL.glBindVertexArray(0)
         GL.glUseProgram(0)
 
-    def _spheres(self, frame, pos, color, shown, camera, aspect, renderer):
-        sph = (frame['kind'] == KIND_SPHERE) & shown & numpy.isfinite(frame['size'][:, 0])
-        if not sph.any():
-            return
+    def _spheres(self, frame, sel, pos, color, camera, aspect, renderer, tris, lines):
+        """Gl1_Sphere: instanced impostors (size[0]: the radius)."""
+        sph = sel & numpy.isfinite(frame['size'][:, 0])
         for wire in (False, True):
-            sel = sph & ((frame['wire'] | renderer.wire | wrapper.Gl1_Sphere.wire) == wire)
-            n = int(sel.sum())
+            part = sph & ((frame['wire'] | renderer.wire | wrapper.Gl1_Sphere.wire) == wire)
+            n = int(part.sum())
             if not n:
                 continue
             corners = numpy.array([[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]], dtype=numpy.float32)
             self._uniforms(self.sphereProg, camera, aspect, renderer, (('wire', wire), ('stripes', wrapper.Gl1_Sphere.stripes)))
-            idx = numpy.nonzero(sel)[0]
+            idx = numpy.nonzero(part)[0]
             idx = idx[numpy.argsort((pos[idx] - camera.eye) @ camera.viewDir, kind='stable')]  # front to back
             R = frame['rot'][idx]
             self.spheres.fill([corners, pos[idx], frame['size'][idx, 0], color[idx], R[:, :, 0], R[:, :, 1], R[:, :, 2]],
                               divisors=[0, 1, 1, 1, 1, 1, 1])
             GL.glDrawArraysInstanced(GL.GL_TRIANGLES, 0, 6, n)
 
-    def _facets(self, frame, color, shown, renderer, lines):
-        ids = frame['facetBody']
-        if not len(ids):
-            return None
-        keep = shown[ids]
-        ids, c = ids[keep], frame['facetCorners'][keep]
+    def _facets(self, frame, sel, pos, color, camera, aspect, renderer, tris, lines):
+        """Gl1_Facet: the triangles it gathered (lit, or their edges when wire)."""
+        ids = frame['triangleBody']
+        keep = sel[ids]
+        ids, c = ids[keep], frame['triangleCorners'][keep]
         wire = frame['wire'][ids] | renderer.wire
         edges = c[wire][:, [0, 1, 1, 2, 2, 0]].reshape(-1, 3)
         lines.append((edges, numpy.repeat(color[ids[wire]], 6, axis=0)))
         c, ids = c[~wire], ids[~wire]
         nrm = numpy.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0])
         nrm /= numpy.maximum(numpy.linalg.norm(nrm, axis=1), 1e-300)[:, None]
-        return c.reshape(-1, 3), numpy.repeat(nrm, 3, axis=0), numpy.repeat(color[ids], 3, axis=0)
+        tris.append((c.reshape(-1, 3), numpy.repeat(nrm, 3, axis=0), numpy.repeat(color[ids], 3, axis=0)))
 
     _CUBE = numpy.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], float)
     _CUBE_TRIS = numpy.array([0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 3, 0, 4, 3, 4, 7])
     _CUBE_NORMALS = numpy.repeat(numpy.array([[0, 0, -1], [0, 0, 1], [0, -1, 0], [0, 1, 0], [1, 0, 0], [-1, 0, 0]], float), 6, axis=0)
     _CUBE_EDGES = numpy.array([0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 0, 4, 1, 5, 2, 6, 3, 7])
 
-    def _boxes(self, frame, pos, color, shown, renderer, lines):
-        box = numpy.nonzero((frame['kind'] == KIND_BOX) & shown)[0]
-        if not len(box):
-            return None
+    def _boxes(self, frame, sel, pos, color, camera, aspect, renderer, tris, lines):
+        """Gl1_Box: 12 lit triangles each (size: the half-extents), or 12 edges when wire."""
+        box = numpy.nonzero(sel)[0]
         R, e = frame['rot'][box], frame['size'][box]
         corners = pos[box][:, None, :] + numpy.einsum('nij,nkj->nki', R, self._CUBE[None] * e[:, None, :])
         wire = frame['wire'][box] | renderer.wire
         lines.append((corners[wire][:, self._CUBE_EDGES].reshape(-1, 3), numpy.repeat(color[box[wire]], 24, axis=0)))
         solid = ~wire
         normals = numpy.einsum('nij,kj->nki', R[solid], self._CUBE_NORMALS)
-        return (corners[solid][:, self._CUBE_TRIS].reshape(-1, 3), normals.reshape(-1, 3),
-                numpy.repeat(color[box[solid]], 36, axis=0))
+        tris.append((corners[solid][:, self._CUBE_TRIS].reshape(-1, 3), normals.reshape(-1, 3),
+                     numpy.repeat(color[box[solid]], 36, axis=0)))
 
-    def _walls(self, frame, pos, color, shown, camera):
-        walls = numpy.nonzero((frame['kind'] == KIND_WALL) & shown)[0]
-        if not len(walls):
-            return None
+    def _walls(self, frame, sel, pos, color, camera, aspect, renderer, tris, lines):
+        """Gl1_Wall: a square grid of Gl1_Wall.div lines each way (size: the axis and the sense)."""
+        walls = numpy.nonzero(sel)[0]
         div = max(int(wrapper.Gl1_Wall.div), 1)
         half = camera.sceneRadius
         pts, cols = [], []
@@ -319,7 +341,7 @@ class SceneDrawer:
                 p1[:, v] += half
                 pts.append(numpy.stack([p0, p1], axis=1).reshape(-1, 3))
                 cols.append(numpy.repeat(color[i:i + 1], 2 * (div + 1), axis=0))
-        return numpy.concatenate(pts), numpy.concatenate(cols)
+        lines.append((numpy.concatenate(pts), numpy.concatenate(cols)))
 
     def _bounds(self, frame, shown):
         ok = shown & numpy.isfinite(frame['boundMin']).all(axis=1) & numpy.isfinite(frame['boundMax']).all(axis=1)
@@ -351,7 +373,7 @@ class SceneDrawer:
             return None
         if fn.max() > g.maxFn:
             g.maxFn = float(fn.max())
-        radii = frame['size'][frame['kind'] == KIND_SPHERE, 0]
+        radii = frame['size'][drawnBy(frame, 'Gl1_Sphere'), 0]
         if len(radii) and radii.min() < g.refRadius:
             g.refRadius = float(radii.min())
         maxR = g.maxRadius if g.maxRadius > 0 else (g.refRadius / 2 if numpy.isfinite(g.refRadius) else camera.sceneRadius / 100)
@@ -393,3 +415,8 @@ class SceneDrawer:
         corners = ((self._CUBE + 1) / 2) @ H.T
         p = corners[self._CUBE_EDGES]
         return p, numpy.tile(numpy.asarray(rgb, float), (len(p), 1))
+
+
+# The drawer of each drawing functor (the Gl1_* classes that gather what they draw: pkg/common/GlFunctors.hpp).
+_SHAPE_DRAWERS = {'Gl1_Sphere': SceneDrawer._spheres, 'Gl1_Facet': SceneDrawer._facets, 'Gl1_Box': SceneDrawer._boxes,
+                  'Gl1_Wall': SceneDrawer._walls}

@@ -12,7 +12,7 @@ import numpy
 from PyQt5 import QtCore, QtGui, QtWidgets
 
 from yade import _yade
-from yade.qt.drawing import SceneDrawer, KIND_SPHERE
+from yade.qt.drawing import SceneDrawer, drawnBy
 
 
 def surfaceFormat():
@@ -94,7 +94,7 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
             lines.append('%.1f fps' % (1 / max(numpy.mean(self.drawTimes), 1e-6)))
         painter = QtGui.QPainter(self)
         if self.renderer.id:  # the bodies' ids at their centres (the first maxIds)
-            shown = numpy.nonzero(frame['kind'] != 0)[0][:self.maxIds]
+            shown = numpy.nonzero(frame['drawer'] >= 0)[0][:self.maxIds]
             if len(shown):
                 xy = self.viewer._camera.project(frame['pos'][shown], self.width(), self.height())
                 painter.setPen(QtGui.QColor(255, 255, 255))
@@ -169,7 +169,7 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
         if f is None or self.viewer is None:
             return -1
         origin, d = self.viewer._camera.ray(x, y, self.width(), self.height())
-        sph = numpy.nonzero(f['kind'] == KIND_SPHERE)[0]
+        sph = numpy.nonzero(drawnBy(f, 'Gl1_Sphere'))[0]
         best = -1
         if len(sph):
             oc = origin - f['pos'][sph]
