@@ -583,12 +583,18 @@ def _pyplot():
     (yade.qt) Qt5Agg, unless a backend was chosen already (MPLBACKEND, an earlier import)."""
     import matplotlib
     if _displayAvailable():
-        if 'matplotlib.pyplot' not in sys.modules and not os.environ.get('MPLBACKEND'):
-            from yade import qt
-            if qt.noView == '':  # the figures in the windows' own Qt loop, as the reference's
-                qt._application()
-                matplotlib.use('Qt5Agg')
+        from yade import qt
+        useQt = qt.noView == '' and not os.environ.get('MPLBACKEND')  # the figures in the windows' Qt loop, as the reference's
+        if useQt and 'matplotlib.pyplot' not in sys.modules:
+            qt._application()
+            matplotlib.use('Qt5Agg')
         import matplotlib.pyplot as plt
+        if useQt and 'qt' not in str(matplotlib.get_backend()).lower() and not plt.get_fignums():
+            try:  # (a script imported pyplot first: its default backend cannot run beside Qt's loop)
+                qt._application()
+                plt.switch_backend('Qt5Agg')
+            except Exception:
+                pass
     elif 'matplotlib.pyplot' not in sys.modules:
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
