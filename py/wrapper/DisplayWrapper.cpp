@@ -63,7 +63,7 @@ static ShapeDrawers& shapeDrawers() {
 
 template <class T> static py::array_t<T> array(std::vector<py::ssize_t> shape) { return py::array_t<T>(shape); }
 
-static py::dict displayFrame(bool pauseRun) {
+static py::dict displayFrame(bool pauseRun, bool contacts, bool pairs) {
     std::unique_ptr<BetweenSteps> between;
     if (pauseRun) between = std::make_unique<BetweenSteps>();
     const Scene& s = omega().scene();
@@ -150,12 +150,12 @@ static py::dict displayFrame(bool pauseRun) {
     d["triangleCorners"] = corners;
     // contacts: the real ones with a normal force (force chains), and every pair (OpenGLRenderer.intrAllWire)
     const InteractionContainer& intrs = s.interactions;
-    std::vector<int> ids, pairs;
+    std::vector<int> ids, pairIds;
     std::vector<double> fn;
-    for (size_t e = 0; e < intrs.size(); ++e) {
+    for (size_t e = 0; (contacts || pairs) && e < intrs.size(); ++e) {
         const int id1 = intrs.pairIds[2 * e], id2 = intrs.pairIds[2 * e + 1];
-        pairs.insert(pairs.end(), {id1, id2});
-        if (!intrs.isReal(e)) continue;
+        if (pairs) pairIds.insert(pairIds.end(), {id1, id2});
+        if (!contacts || !intrs.isReal(e)) continue;
         const auto* np = dynamic_cast<const NormPhys*>(intrs.phys(e));
         const auto* g = dynamic_cast<const ScGeom*>(intrs.geom(e));
         if (!np) continue;
@@ -165,7 +165,7 @@ static py::dict displayFrame(bool pauseRun) {
     }
     d["contactIds"] = py::array_t<int>({(py::ssize_t)fn.size(), (py::ssize_t)2}, ids.data());
     d["contactFn"] = py::array_t<double>({(py::ssize_t)fn.size()}, fn.data());
-    d["pairIds"] = py::array_t<int>({(py::ssize_t)pairs.size() / 2, (py::ssize_t)2}, pairs.data());
+    d["pairIds"] = py::array_t<int>({(py::ssize_t)pairIds.size() / 2, (py::ssize_t)2}, pairIds.data());
     if (s.isPeriodic) {
         auto H = array<double>({3, 3});
         auto hh = H.mutable_unchecked<2>();
@@ -181,14 +181,15 @@ static py::dict displayFrame(bool pauseRun) {
 }
 
 void bindDisplay(py::module_& m) {
-    m.def("_displayFrame", &displayFrame, py::arg("pauseRun") = true,
+    m.def("_displayFrame", &displayFrame, py::arg("pauseRun") = true, py::arg("contacts") = true, py::arg("pairs") = true,
           "What the 3D view draws, as a dict of NumPy copies: per body its drawer (an index into drawers, the names of the "
           "GlShapeFunctor classes; -1: no shape or no functor draws it, -2: a clump, drawn as its members), pos, rot (3×3), "
           "size (what the functor gathered: a sphere's radius, a box's half-extents, a wall's axis and sense), color, wire, "
           "highlight, mask, boundMin and boundMax (NaN without a bound); undrawn (the shape classes no functor draws); "
           "triangleBody and triangleCorners (world coordinates: facets); contactIds and contactFn (signed normal "
           "force normalForce·normal, positive in compression); pairIds (every pair); cellHSize (None when not periodic); "
-          "iter; time. pauseRun: stop a background run at the end of its step meanwhile.");
+          "iter; time. pauseRun: stop a background run at the end of its step meanwhile (for as long as the copy takes); "
+          "contacts, pairs: gather those (else the arrays are empty: a frame that draws no contact pauses the run less).");
 }
 
 } // namespace yade

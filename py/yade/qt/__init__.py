@@ -206,7 +206,8 @@ def _takeSnapshot(file, format, timeout):
     if not any(v._widget is not None for v in _views):
         return 'no 3D view is open (open one with qt.View())'
     from yade import _yade
-    _pending.put((file, _yade._displayFrame(pauseRun=False)))
+    r = Renderer()
+    _pending.put((file, _yade._displayFrame(pauseRun=False, contacts=r.intrPhys, pairs=r.intrAllWire)))
     if threading.current_thread() is threading.main_thread():
         _saveSnapshots()
     return ''

@@ -67,7 +67,8 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
             painter.end()
             return
         t0 = time.perf_counter()
-        frame = self.frameOverride if self.frameOverride is not None else _yade._displayFrame()
+        r = self.renderer  # (contacts gathered only when drawn: the run pauses for less)
+        frame = self.frameOverride if self.frameOverride is not None else _yade._displayFrame(contacts=r.intrPhys, pairs=r.intrAllWire)
         self.frame = frame
         ratio = self.devicePixelRatioF()
         w, h = int(self.width() * ratio), int(self.height() * ratio)

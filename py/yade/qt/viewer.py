@@ -127,7 +127,7 @@ class GLViewer:
         """Centers the view on the scene (median=True: on the bodies' median position); suggestedRadius > 0
         sets the scene's radius."""
         from yade import _yade
-        c, r = sceneBox(_yade._displayFrame(), median=median)
+        c, r = sceneBox(_yade._displayFrame(contacts=False, pairs=False), median=median)
         self._camera.sceneCenter = numpy.asarray(c, dtype=float)
         self._camera.sceneRadius = float(suggestedRadius) if suggestedRadius > 0 else r
         self._camera.showEntireScene()
