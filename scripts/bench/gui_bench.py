@@ -8,7 +8,8 @@
    gathered by _displayFrame, uploaded, drawn, read back as an image), and _displayFrame's own time;
 2. following a run: the dense lattice of scripts/bench/dense.py with M spheres, STEPS steps of O.run(STEPS, True),
    in separate processes pinned to --cpus, alternating: without a view, and with a view and the controller open
-   (the view redraws every 100 ms while the run goes on). Prints iter/s of each and the ratio, median of the pairs.
+   (the view redraws every 100 ms while the run goes on). Prints iter/s of each and the ratio, median of the pairs,
+   and the share of the time the frames held the run paused (an upper bound: it includes waiting for a step's end).
 A report, not a test: it prints figures and exits 0."""
 import argparse
 import os
@@ -35,12 +36,20 @@ O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Face
                              [Law2_ScGeom_FrictPhys_CundallStrack()]),
              NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.4)]
 O.dt = .5 * utils.PWaveTimeStep()
+spent = [0.0]
 if gui:
+    import yade.qt.glwidget as gw
+    from yade import _yade
+    def timed(*a, **k):  # how long the frames keep the run paused (at most: it includes waiting for the step's end)
+        t = time.perf_counter(); r = _yade._displayFrame(*a, **k); spent[0] += time.perf_counter() - t; return r
+    gw._yade = type('Timed', (), {'_displayFrame': staticmethod(timed), 'O': _yade.O})
     qt.View(); qt.Controller()
 O.run(20, True)
+spent[0] = 0.0
 t0 = time.time()
 O.run(STEPS, True)
-print('iter_per_s %.3f' % (STEPS / (time.time() - t0)))
+wall = time.time() - t0
+print('iter_per_s %.3f paused_percent %.2f' % (STEPS / wall, 100 * spent[0] / wall))
 """
 
 DRAW = r"""
@@ -91,15 +100,18 @@ def main():
     if a.draw:
         print("draw  ", python(DRAW, [a.draw], a.cpus), flush=True)
     if a.run:
-        ratios = []
+        ratios, paused = [], []
         for rep in range(a.repeats):
             plain = float(python(RUN, [a.run, a.steps, "none"], a.cpus).split()[1])
-            gui = float(python(RUN, [a.run, a.steps, "gui"], a.cpus).split()[1])
+            out = python(RUN, [a.run, a.steps, "gui"], a.cpus).split()
+            gui = float(out[1])
             ratios.append(gui / plain)
-            print("run    pair %d: without a view %.1f iter/s, with a view and the controller %.1f iter/s: %.3f"
-                  % (rep + 1, plain, gui, gui / plain), flush=True)
-        print("run    median ratio (with / without) %.3f over %d pairs, pinned to CPUs %s"
-              % (statistics.median(ratios), len(ratios), a.cpus or "(any)"))
+            paused.append(float(out[3]))
+            print("run    pair %d: without a view %.1f iter/s, with a view and the controller %.1f iter/s: %.3f; the frames "
+                  "held the run for at most %.2f %% of the time" % (rep + 1, plain, gui, gui / plain, paused[-1]), flush=True)
+        print("run    median ratio (with / without) %.3f over %d pairs (range %.3f-%.3f), pinned to CPUs %s; paused at most "
+              "%.2f %% (median)" % (statistics.median(ratios), len(ratios), min(ratios), max(ratios), a.cpus or "(any)",
+                                    statistics.median(paused)))
     return 0
 
 
