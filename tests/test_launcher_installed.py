@@ -1,0 +1,54 @@
+"""The launcher as the Debian package installs it (/usr/bin/yade-fast): a copy with no source tree
+next to it takes the 'yade' package from sys.path (here PYTHONPATH names the build) and says that
+--test needs the source tree."""
+
+import os
+import pathlib
+import shutil
+import subprocess
+
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parent.parent
+BUILD = pathlib.Path(os.environ.get("YADE_BUILD_DIR") or REPO / "build")
+
+pytestmark = pytest.mark.skipif(not (BUILD / "yade").is_dir(),
+                                reason="yade is not built (run bash scripts/setup.sh)")
+
+
+def run_copy(tmp_path, *args, pythonpath=True):
+    bindir = tmp_path / "bin"
+    bindir.mkdir(exist_ok=True)
+    launcher = bindir / "yade-fast"
+    shutil.copy(REPO / "yade", launcher)
+    env = dict(os.environ)
+    env.pop("YADE_BUILD_DIR", None)
+    env.pop("OMP_NUM_THREADS", None)
+    if pythonpath:
+        env["PYTHONPATH"] = str(BUILD)
+    else:
+        env.pop("PYTHONPATH", None)
+    return subprocess.run(["/usr/bin/python3", str(launcher), *map(str, args)], capture_output=True,
+                          text=True, timeout=120, env=env, cwd=str(tmp_path))
+
+
+def test_installed_copy_runs_a_script_from_sys_path(tmp_path):
+    script = tmp_path / "s.py"
+    script.write_text("O.bodies.append(sphere((0, 0, 0), 1))\nO.run(3, True)\nprint('iter', O.iter, yade.__file__)\n")
+    r = run_copy(tmp_path, "-n", "-x", script)
+    assert r.returncode == 0, r.stderr
+    assert "iter 3 " + str(BUILD / "yade") in r.stdout
+
+
+def test_installed_copy_names_itself_and_refuses_test(tmp_path):
+    r = run_copy(tmp_path, "-h")
+    assert r.returncode == 0 and r.stdout.startswith("usage: yade-fast "), r.stdout
+    r = run_copy(tmp_path, "--test")
+    assert r.returncode == 2 and "need the source tree" in r.stderr
+
+
+def test_installed_copy_without_package(tmp_path):
+    r = run_copy(tmp_path, "-n", "-x", pythonpath=False)
+    if r.returncode == 0:
+        pytest.skip("a yade package is installed for /usr/bin/python3")
+    assert r.returncode == 2 and "not installed" in r.stderr, r.stderr
