@@ -19,6 +19,7 @@
 #include <py/wrapper/SpherePackWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
+#include <lib/vtk/VTKWriter.hpp>
 #include <py/wrapper/CellWrapper.hpp>
 #include <py/wrapper/ScGeomWrapper.hpp>
 #ifdef _OPENMP
@@ -105,6 +106,7 @@ PYBIND11_MODULE(_yade, m) {
 #endif
         v["eigen"] = std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION);
         v["pybind11"] = std::to_string(PYBIND11_VERSION_MAJOR) + "." + std::to_string(PYBIND11_VERSION_MINOR) + "." + std::to_string(PYBIND11_VERSION_PATCH);
+        if (yade::vtkAvailable()) v["vtk"] = yade::vtkVersion();
         v["python"] = std::to_string(PY_MAJOR_VERSION) + "." + std::to_string(PY_MINOR_VERSION) + "." + std::to_string(PY_MICRO_VERSION);
         return v;
     }, "Versions of the libraries compiled in (yade.libVersions)");
@@ -113,6 +115,7 @@ PYBIND11_MODULE(_yade, m) {
         for (int up = 0; up < 3 && root.find('/') != std::string::npos; ++up) root = root.substr(0, root.rfind('/'));
         m.attr("_sourceRoot") = root;
     }
+    m.attr("vtk") = yade::vtkAvailable(); // VTKRecorder writes files (the build found libvtk9-dev)
 #ifdef _OPENMP
     m.attr("openmp") = true;
 #else

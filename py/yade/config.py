@@ -6,7 +6,7 @@ from . import _yade
 
 version = revision = '0.1.0'
 # Optional parts compiled in, with the reference's spelling (upper case).
-features = (['OPENMP'] if _yade.openmp else []) + ['LOGGER']
+features = (['OPENMP'] if _yade.openmp else []) + ['LOGGER'] + (['VTK'] if _yade.vtk else [])
 prefix = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # the build directory holding yade/
 suffix = ''
 libDir = os.path.dirname(os.path.abspath(__file__))
