@@ -3,6 +3,7 @@
 // library, and a build without it (libvtk9-dev missing) still links: the functions then throw, saying so.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,14 +25,14 @@ struct VtkPiece {
     int cellType = 1;                  // VTK's number: 1 vertex, 3 line, 5 triangle, 12 hexahedron
     int pointsPerCell = 1;
     std::vector<int64_t> connectivity; // pointsPerCell point indices per cell
-    std::vector<VtkArray> pointData, cellData;
+    std::deque<VtkArray> pointData, cellData; // (a deque: a reference to an array stays valid as more are added)
     size_t numPoints() const { return points.size() / 3; }
     size_t numCells() const { return pointsPerCell ? connectivity.size() / pointsPerCell : 0; }
     VtkArray& addPointArray(const std::string& name, int components) { return add(pointData, name, components); }
     VtkArray& addCellArray(const std::string& name, int components) { return add(cellData, name, components); }
 
 private:
-    static VtkArray& add(std::vector<VtkArray>& to, const std::string& name, int components) {
+    static VtkArray& add(std::deque<VtkArray>& to, const std::string& name, int components) {
         to.push_back(VtkArray{name, components, {}});
         return to.back();
     }

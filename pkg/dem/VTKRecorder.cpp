@@ -84,7 +84,7 @@ struct ContactSums {
 
 // Adds the arrays the recorders ask for, for the bodies `ids` (one point or cell each).
 void bodyArrays(const Scene& s, const std::vector<int>& ids, const Selection& sel, const ContactSums* sums,
-                std::vector<VtkArray>& out, bool isSphere) {
+                std::deque<VtkArray>& out, bool isSphere) {
     auto add = [&](const char* name, int c) -> std::vector<double>& {
         out.push_back(VtkArray{name, c, {}});
         out.back().values.reserve(ids.size() * c);
@@ -273,7 +273,11 @@ void VTKRecorder::action() {
     }
 
     const std::filesystem::path folder = std::filesystem::path(fileName).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder);
+    try {
+        if (!folder.empty()) std::filesystem::create_directories(folder);
+    } catch (const std::filesystem::filesystem_error& e) {
+        throw std::runtime_error("VTKRecorder: cannot make the folder " + folder.string() + " of fileName: " + e.code().message());
+    }
     VtkWriteOptions options;
     options.ascii = ascii;
     options.compress = compress;
