@@ -252,7 +252,7 @@ void VTKRecorder::action() {
             p.connectivity.push_back((int64_t)p.numPoints());
             push(p.points, w1);
             p.connectivity.push_back((int64_t)p.numPoints());
-            push(p.points, w1 + (x2 - x1));
+            push(p.points, w1 == x1 ? x2 : Vector3r(w1 + (x2 - x1))); // (x2 itself when body 1 is inside the cell: no rounding)
             fn.push_back(phys->normalForce.norm());
             const auto* ns = dynamic_cast<const NormShearPhys*>(phys);
             ft.push_back(ns ? ns->shearForce.norm() : 0.);
