@@ -7,7 +7,7 @@ A script declares its parameters with their default values::
     NewtonIntegrator(damping=table.damping)
 
 When the script runs in a batch (``yade-batch``, which sets the ``YADE_BATCH``
-environment variable to ``tableFile:lineNumber`` for each child), the values in
+environment variable to ``tableFile:lineNumber`` for each job, as the reference does), the values in
 that line of the parameter table override the defaults; otherwise the defaults
 are used. The values are put in the module ``yade.params.table`` (created anew by
 each call of :func:`readParamsFromTable`); they are not made global variables.
@@ -21,7 +21,9 @@ Format of the parameter table (a text file)::
 
 Values are Python expressions (evaluated with the names of the :mod:`math` module
 available); the optional ``description`` column is taken as text and names the
-run (it is synthesized from the assigned parameters when absent).
+run (it is synthesized from the other columns when absent). Columns whose name
+starts with ``!`` (``!THREADS``, ``!SCRIPT``...) are for ``yade-batch`` and are not
+parameters. ``doc/batch.md`` describes the batch.
 """
 import math
 import os
@@ -181,6 +183,8 @@ def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **k
             if name == 'description':
                 description = expr
                 continue
+            if name.startswith('!'):  # a column for yade-batch (!THREADS, !SCRIPT...), not a parameter
+                continue
             if name not in kw and not unknownOk:
                 raise NameError("Parameter `%s' has no default value assigned" % name)
             if expr is None:
@@ -197,8 +201,9 @@ def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **k
                 raise
         nRead = len(assigned)
         params = ','.join('%s=%s' % (n, e) for n, e in assigned)
-        if description is None:
-            description = params.replace("'", '').replace('"', '')
+        if description is None:  # as yade-batch names the job: all the columns, '!' and quotes dropped
+            description = ','.join('%s=%s' % (n.lstrip('!'), e) for n, e in zip(headers, exprs) if n != 'description')
+            description = description.replace("'", '').replace('"', '')
         _setTag(O, 'line', 'l%d' % lineNo)
         _setTag(O, 'description', description)
         _setTag(O, 'params', params)
@@ -213,6 +218,9 @@ def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **k
     except Exception:
         pass
     _makeTableModule(values)
+    if tableFileLine is not None and inBatch():
+        from . import batch  # the job tells yade-batch's status page how far it is
+        batch.startJobReport()
     return nRead
 
 

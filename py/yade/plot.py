@@ -35,6 +35,7 @@ import math
 import numbers
 import os
 import sys
+import time
 
 __all__ = ['data', 'plots', 'labels', 'legendLoc', 'autozoom', 'scientific', 'live', 'liveInterval',
            'componentSeparator', 'addData', 'addAutoData', 'reset', 'resetData', 'plot', 'saveDataTxt',
@@ -146,6 +147,8 @@ def addData(*d_in, **kw):
         if len(col) < n:
             col.extend([nan] * (n - len(col)))
         col.append(row.get(name, nan))
+    if _batch['path']:
+        _batchUpdate()
 
 
 _autoNamespace = {}
@@ -634,6 +637,8 @@ def _savePng(figs):
     for i, fig in enumerate(figs):
         suffix = '.plot.png' if i == 0 else '.plot.%d.png' % (i + 1)
         path = base + suffix
+        if _batch['path']:  # a yade-batch job: the PNG named after the job, that the status page shows
+            path = _batch['path'] if i == 0 else '%s.%d.png' % (_batch['path'][:-4], i + 1)
         try:
             fig.savefig(path)
         except OSError:  # e.g. a read-only current folder: the temporary folder
@@ -641,7 +646,12 @@ def _savePng(figs):
             path = os.path.join(tempfile.gettempdir(), os.path.basename(base) + suffix)
             fig.savefig(path)
         paths.append(path)
-        print('plot: no display available, figure saved to %s' % path)
+        if path not in _batch['said']:
+            print('plot: no display available, figure saved to %s' % path)
+            if _batch['path']:
+                _batch['said'].add(path)  # (not again at each update of the job's figure)
+    if _batch['path']:
+        _batch['saved'], _batch['rows'] = time.time(), _rowCount()
     return paths
 
 
@@ -733,6 +743,7 @@ def plot(noShow=False, subPlots=True):
     """
     figs = createPlots(subPlots=subPlots)
     ret = figs[0] if len(figs) == 1 else figs
+    _batch['subPlots'] = subPlots
     if noShow:
         return ret
     plt = _pyplot()
@@ -779,6 +790,8 @@ def _rowCount():
 
 
 def _finalPng():
+    if _batch['path']:
+        return  # (_batchFinal writes the job's figure)
     if _atExit['subPlots'] is None or _rowCount() == _atExit['rows'] or not plots:
         return
     try:
@@ -789,3 +802,52 @@ def _finalPng():
             plt.close(fig)
     except Exception as e:  # never fail at exit because of a plot
         print('plot: could not write the final figure (%s)' % e)
+
+
+# ---------------------------------------------------------------- in a yade-batch job
+# yade-batch names the PNG of each job's figure (YADE_BATCH_PLOT, e.g. /dir/job.py.first.png) and shows it
+# on its status page: plot() writes it there instead of <script>.plot.png, it is updated every
+# YADE_BATCH_PLOT_PERIOD seconds while data are added, and written when the job ends (also when the
+# script never called plot(), as long as plots and data are set).
+_batch = {'path': os.environ.get('YADE_BATCH_PLOT') or None, 'period': 60., 'saved': None, 'rows': 0,
+          'said': set(), 'subPlots': True, 'busy': False}
+try:
+    _batch['period'] = float(os.environ.get('YADE_BATCH_PLOT_PERIOD', 60.))
+except ValueError:
+    pass
+
+
+def _batchWrite():
+    if not plots or not _rowCount() or _batch['busy']:
+        return
+    _batch['busy'] = True
+    try:
+        plt = _pyplot()
+        figs = createPlots(subPlots=_batch['subPlots'])
+        _savePng(figs)
+        for fig in figs:
+            plt.close(fig)
+    except Exception as e:  # a figure must never break the job
+        print('plot: could not write the figure for yade-batch (%s)' % e)
+    finally:
+        _batch['busy'] = False
+
+
+def _batchUpdate():
+    if _batch['period'] <= 0 or not plots:
+        return
+    now = time.time()
+    if _batch['saved'] is None:
+        _batch['saved'] = now  # the first update comes one period after the first data
+    elif now - _batch['saved'] >= _batch['period']:
+        _batchWrite()
+
+
+def _batchFinal():
+    if _rowCount() != _batch['rows']:
+        _batchWrite()
+
+
+if _batch['path']:
+    import atexit
+    atexit.register(_batchFinal)

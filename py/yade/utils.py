@@ -653,9 +653,10 @@ def setBodyColor(id, color):
 
 
 def runningInBatch():
-    """Whether the script runs in a batch (yade-batch sets PARAM_TABLE)."""
-    import os
-    return 'PARAM_TABLE' in os.environ
+    """Whether the script runs in a batch: yade-batch sets ``YADE_BATCH`` (table:line) for each job, as the
+    reference does (its runningInBatch() ignores the older ``PARAM_TABLE``)."""
+    from .params import inBatch
+    return inBatch()
 
 
 def replaceCollider(colliderEngine):
