@@ -10,13 +10,12 @@ import http.client
 import json
 import os
 import pathlib
+import re
 import signal
 import socket
 import subprocess
-import sys
 import textwrap
 import time
-import urllib.error
 import urllib.request
 
 import pytest
@@ -170,7 +169,8 @@ def real_batch(tmp_path_factory):
                 return None
             logs = [d / j["log"] for j in s["jobs"]]
             if all(j["state"] == "running" for j in s["jobs"]) and \
-                    all(p.is_file() and "READY" in p.read_text() for p in logs):
+                    all(p.is_file() and "READY" in p.read_text() for p in logs) and \
+                    [j["progress"].get("iter") for j in s["jobs"]] == [30, 30, 50]:  # (reported each second)
                 return s
         seen["status"] = wait_for(all_ready, 90, "three running jobs on the page", proc)
         seen["page"] = page(port)
@@ -214,6 +214,7 @@ def test_page_lists_the_running_jobs(real_batch):
         assert 'id="job%d"' % i in html and 'href="/jobs/%d/log"' % i in html
     assert html.count('<tr class="running"') == 3
     assert "3 running" in html
+    assert len(re.findall(r"<td>step (30|50), t = [0-9.e+-]+ s, 1 bodies</td>", html)) == 3  # progress reported
     # the tail of each log is on the page
     assert "READY" in html
     code, headers, body = seen["log_running"]
@@ -607,3 +608,49 @@ def test_plot_png_of_a_batch_job(tmp_path):
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert r.stdout.count("figure saved to") == 1  # said once, not at every update
     assert not (tmp_path / "job.plot.png").exists()
+
+
+def test_ctrl_c_stops_the_jobs(tmp_path):
+    """Ctrl-C (SIGINT) to the batch stops its running jobs (they run in sessions of their own, so the batch
+    signals them), cancels the pending ones, prints the summary and exits with 130."""
+    write(tmp_path / "s.py", """
+        import os, time
+        readParamsFromTable(k=0)
+        open('pid', 'a').write('%d\\n' % os.getpid())
+        time.sleep(120)
+    """)
+    write(tmp_path / "t.table", """
+        k
+        1
+        2
+    """)
+    out = open(tmp_path / "out.txt", "w")
+    proc = subprocess.Popen(["/usr/bin/python3", str(BATCH), "-j", "1", "--no-http", "t.table", "s.py"], stdout=out,
+                            stderr=subprocess.STDOUT, env=env(), cwd=str(tmp_path))
+    try:
+        pid = int(wait_for(lambda: (tmp_path / "pid").is_file() and (tmp_path / "pid").read_text().strip(), 60,
+                           "the first job", proc))
+        proc.send_signal(signal.SIGINT)
+        rc = proc.wait(30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        out.close()
+    text = (tmp_path / "out.txt").read_text()
+    assert rc == 130, text
+    assert "interrupted (killed by SIGTERM)" in text and "1 not run" in text
+    assert "Traceback" not in text
+    with pytest.raises(ProcessLookupError):
+        os.kill(pid, 0)
+
+
+def test_same_description_keeps_both_logs(tmp_path):
+    write(tmp_path / "s.py", "print(1)\n")
+    write(tmp_path / "t.table", """
+        a description
+        1 same
+        2 same
+    """)
+    r = run_batch(tmp_path, "--dry-run", "t.table", "s.py")
+    assert r.returncode == 0, r.stderr
+    assert "> s.py.same.log 2>&1" in r.stdout and "> s.py.same.l3.log 2>&1" in r.stdout

@@ -507,7 +507,15 @@ class Batch:
                         break
                 time.sleep(poll)
         except KeyboardInterrupt:
-            self.interrupt()
+            try:  # a second Ctrl-C must not leave the jobs running
+                previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+            except ValueError:  # (not the main thread)
+                previous = None
+            try:
+                self.interrupt()
+            finally:
+                if previous is not None:
+                    signal.signal(signal.SIGINT, previous)
         self.finished = time.time()
 
     def interrupt(self):
@@ -954,6 +962,8 @@ def buildJobs(opts, table, batchScript, parser=None):
             exe = launcher
         elif not os.path.isfile(exe):
             raise ValueError('executable %s does not exist' % exe)
+        else:
+            exe = os.path.abspath(exe)
         count = opts.timing
         c = line.special('COUNT')
         if c is not None and opts.timing:
@@ -1027,6 +1037,7 @@ def main(argv=None, batchScript=None, prog=None, out=None):
     previous = signal.signal(signal.SIGTERM, terminate)
     try:
         batch.run()
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # (the summary is printed whole)
         for line in batch.summary():
             say(line)
         if opts.timing:
@@ -1039,6 +1050,7 @@ def main(argv=None, batchScript=None, prog=None, out=None):
                 for line in report:
                     say(line)
         status = 130 if batch.interrupted else (1 if batch.failed() else 0)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         if server is not None and opts.http_wait and not batch.interrupted:
             say('All jobs finished; %s keeps serving until Ctrl-C.' % pageAddress(server, opts.address))
             try:
@@ -1050,6 +1062,7 @@ def main(argv=None, batchScript=None, prog=None, out=None):
         return status
     finally:
         signal.signal(signal.SIGTERM, previous)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         if server is not None:
             server.shutdown()
             server.server_close()
