@@ -7,10 +7,12 @@ creates once it has seen them running on the page, so it needs no fixed delays. 
 oedometric tutorial (examples/tutorial/03-oedometric-test.table: three simulations of 7-11 s each, about
 20 s on two cores) is the slowest test here."""
 import http.client
+import io
 import json
 import os
 import pathlib
 import re
+import shutil
 import signal
 import socket
 import subprocess
@@ -162,6 +164,10 @@ def real_batch(tmp_path_factory):
                             env=env(), cwd=str(d))
     seen = {}
     try:
+        # (the port printed: another program may have taken the free one in the meantime)
+        port = int(wait_for(lambda: re.search(r"http://localhost:(\d+) shows batch summary", (d / "out.txt").read_text()),
+                            60, "the page's address", proc).group(1))
+
         def all_ready():
             try:
                 s = status_json(port)
@@ -530,7 +536,7 @@ def test_page_escapes_logs_and_file_names(batch, tmp_path):
     line = batch.TableLine(2, "x", ["description"], ['"><script>alert(3)</script>'])
     job = batch.Job(0, line, "t<1>.table", "s.py", 1, "/bin/true", str(log))
     job.state, job.started, job.finished, job.returncode = batch.Job.FAILED, time.time() - 2, time.time(), 3
-    b = batch.Batch([job], 1, scriptName="<i>s.py</i>", tableName="t<1>.table", out=open(os.devnull, "w"))
+    b = batch.Batch([job], 1, scriptName="<i>s.py</i>", tableName="t<1>.table", out=io.StringIO())
     b.started = time.time() - 5
     server = batch.startStatusServer(b, "127.0.0.1", 0)
     try:
@@ -556,7 +562,6 @@ def test_status_server_refuses_a_taken_range(batch):
         busy.bind(("127.0.0.1", 0))
         busy.listen(1)
         port = busy.getsockname()[1]
-        import io
         out = io.StringIO()
         assert batch.startStatusServer(object(), "127.0.0.1", port, out=out, tries=1) is None
     assert "port %d is already in use" % port in out.getvalue() and "no status page" in out.getvalue()
@@ -654,3 +659,35 @@ def test_same_description_keeps_both_logs(tmp_path):
     r = run_batch(tmp_path, "--dry-run", "t.table", "s.py")
     assert r.returncode == 0, r.stderr
     assert "> s.py.same.log 2>&1" in r.stdout and "> s.py.same.l3.log 2>&1" in r.stdout
+
+
+def test_help():
+    r = subprocess.run(["/usr/bin/python3", str(BATCH), "--help"], capture_output=True, text=True, timeout=60, env=env())
+    assert r.returncode == 0 and r.stdout.startswith("usage: yade-batch [options] TABLE [SCRIPT.py]"), r.stderr
+    assert "(default: $.@.log, e.g. job.py.first.log)" in r.stdout and "--http-wait" in r.stdout
+
+
+def test_installed_copy_runs_its_own_launcher(tmp_path):
+    """As the Debian package installs them: yade-fast-batch next to yade-fast, no source tree, the 'yade'
+    package from sys.path; the jobs run yade-fast."""
+    bindir = tmp_path / "bin"
+    bindir.mkdir()
+    shutil.copy(REPO / "yade", bindir / "yade-fast")
+    shutil.copy(BATCH, bindir / "yade-fast-batch")
+    write(tmp_path / "s.py", """
+        readParamsFromTable(a=0)
+        from yade.params import table
+        print('A', table.a, yade.__file__)
+    """)
+    write(tmp_path / "t.table", "a\n7\n")
+    e = env()
+    e.pop("YADE_BUILD_DIR", None)
+    e["PYTHONPATH"] = str(BUILD)
+    r = subprocess.run(["/usr/bin/python3", str(bindir / "yade-fast-batch"), "--no-http", "t.table", "s.py"],
+                       capture_output=True, text=True, timeout=120, env=e, cwd=str(tmp_path))
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "Will run s.py with %s," % (bindir / "yade-fast") in r.stdout
+    assert "A 7 " + str(BUILD / "yade") in (tmp_path / "s.py.a=7.log").read_text()
+    r = subprocess.run(["/usr/bin/python3", str(bindir / "yade-fast-batch"), "-h"], capture_output=True, text=True,
+                       timeout=60, env=e)
+    assert r.stdout.startswith("usage: yade-fast-batch "), r.stdout + r.stderr

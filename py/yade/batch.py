@@ -879,7 +879,7 @@ def makeParser(prog='yade-batch', defaultCores=None):
                    help='the table lines to run, as numbered in an editor, e.g. 2,4-6 (default: all)')
     p.add_argument('--log', default=DEFAULT_LOG, metavar='FORMAT',
                    help="log file of each job: $ is replaced by the script's name, %% by the line number, @ by the "
-                        "description (default: %s, e.g. job.py.first.log)" % DEFAULT_LOG.replace('%', '%%'))
+                        "description (default: " + DEFAULT_LOG.replace('%', '%%') + ", e.g. job.py.first.log)")
     p.add_argument('--timing', type=int, default=0, metavar='COUNT',
                    help='run each line COUNT times (a !COUNT column overrides it) and print the mean, deviation, '
                         'minimum and maximum of the durations per line')
