@@ -1,6 +1,6 @@
-"""The launcher as the Debian package installs it (/usr/bin/yade-fast): a copy with no source tree
-next to it takes the 'yade' package from sys.path (here PYTHONPATH names the build) and says that
---test needs the source tree."""
+"""The launcher as cmake/Install.cmake and the Debian package install it (<prefix>/bin/yade-fast): a
+copy with no source tree next to it takes the 'yade' package from <prefix>/lib/yade-fast, else from
+sys.path (here PYTHONPATH names the build), and says that --test needs the source tree."""
 
 import os
 import pathlib
@@ -16,7 +16,7 @@ pytestmark = pytest.mark.skipif(not (BUILD / "yade").is_dir(),
                                 reason="yade is not built (run bash scripts/setup.sh)")
 
 
-def run_copy(tmp_path, *args, pythonpath=True):
+def run_copy(tmp_path, *args, pythonpath=True, env_extra=None):
     bindir = tmp_path / "bin"
     bindir.mkdir(exist_ok=True)
     launcher = bindir / "yade-fast"
@@ -28,6 +28,7 @@ def run_copy(tmp_path, *args, pythonpath=True):
         env["PYTHONPATH"] = str(BUILD)
     else:
         env.pop("PYTHONPATH", None)
+    env.update(env_extra or {})
     return subprocess.run(["/usr/bin/python3", str(launcher), *map(str, args)], capture_output=True,
                           text=True, timeout=120, env=env, cwd=str(tmp_path))
 
@@ -38,6 +39,21 @@ def test_installed_copy_runs_a_script_from_sys_path(tmp_path):
     r = run_copy(tmp_path, "-n", "-x", script)
     assert r.returncode == 0, r.stderr
     assert "iter 3 " + str(BUILD / "yade") in r.stdout
+
+
+def test_installed_copy_prefers_its_private_package(tmp_path):
+    """<prefix>/lib/yade-fast/yade comes first, before a 'yade' on sys.path (Debian's python3-yade in
+    /usr/lib/python3/dist-packages, here a stub on PYTHONPATH)."""
+    (tmp_path / "lib" / "yade-fast").mkdir(parents=True)
+    (tmp_path / "lib" / "yade-fast" / "yade").symlink_to(BUILD / "yade")
+    stub = tmp_path / "other" / "yade"
+    stub.mkdir(parents=True)
+    (stub / "__init__.py").write_text("raise ImportError('the other yade was imported')\n")
+    script = tmp_path / "s.py"
+    script.write_text("print('from', yade.__file__)\n")
+    r = run_copy(tmp_path, "-n", "-x", script, pythonpath=False, env_extra={"PYTHONPATH": str(stub.parent)})
+    assert r.returncode == 0, r.stderr
+    assert "from " + str(tmp_path / "lib" / "yade-fast" / "yade" / "__init__.py") in r.stdout
 
 
 def test_installed_copy_names_itself_and_refuses_test(tmp_path):
