@@ -59,10 +59,11 @@ changes=$(ls "$WORK"/${PKG}_*.changes | head -1)
 say "built $(basename "$deb") in ${build_s} s: $(du -k "$deb" | cut -f1) KiB ($(stat -c %s "$deb") bytes)"
 
 # lintian: errors fail the test; warnings are listed
-lintian --info=no "$changes" >"$WORK/lintian.txt" 2>&1 || true
+lintian "$changes" >"$WORK/lintian.txt" 2>&1 || true
+lintian -I -E --pedantic "$changes" >"$WORK/lintian-all.txt" 2>&1 || true
 lintian_e=$(grep -c '^E: ' "$WORK/lintian.txt" || true)
 lintian_w=$(grep -c '^W: ' "$WORK/lintian.txt" || true)
-say "lintian: $lintian_e errors, $lintian_w warnings ($WORK/lintian.txt)"
+say "lintian: $lintian_e errors, $lintian_w warnings ($WORK/lintian.txt; with info and pedantic tags: $WORK/lintian-all.txt)"
 grep -E '^[EW]: ' "$WORK/lintian.txt" | sed 's/^/  /' || true
 [[ "$lintian_e" -eq 0 ]] || fail "lintian reports errors"
 
@@ -76,11 +77,14 @@ run_dir="$WORK/run"
 rm -rf "$run_dir"
 mkdir -p "$run_dir"
 cd "$run_dir"
-for f in /usr/bin/yade-fast /usr/lib/python3/dist-packages/yade/__init__.py /usr/share/doc/$PKG/copyright \
-         /usr/share/man/man1/yade-fast.1.gz; do
+# the package in a folder of its own (python3-yade, the reference, owns dist-packages/yade), on python3's
+# sys.path through a .pth file
+PYDIR=/usr/lib/yade-fast
+for f in /usr/bin/yade-fast $PYDIR/yade/__init__.py $PYDIR/yade/qt/__init__.py /usr/lib/python3/dist-packages/yade-fast.pth \
+         /usr/share/doc/$PKG/copyright /usr/share/man/man1/yade-fast.1.gz; do
     [[ -e "$f" ]] || fail "$f is not installed"
 done
-ls /usr/lib/python3/dist-packages/yade/_yade*.so >/dev/null || fail "the extension _yade*.so is not installed"
+ls $PYDIR/yade/_yade*.so >/dev/null || fail "the extension _yade*.so is not installed"
 [[ -e /usr/share/doc/$PKG/README.md || -e /usr/share/doc/$PKG/README.md.gz ]] || fail "README.md is not installed"
 
 yade-fast -v | grep -q '^Yade ' || fail "yade-fast -v"
@@ -95,16 +99,29 @@ rc=$?
 set -e
 [[ $rc -eq 2 ]] && grep -q 'source tree' "$WORK/test-option.log" || fail "yade-fast --test should say it needs the source tree (status $rc)"
 
-out=$(env -u PYTHONPATH /usr/bin/python3 -c '
+# plain python3: `import yade` gets this package, unless python3-yade (the reference) is installed too: its
+# dist-packages/yade comes before the .pth's folder; then the folder must at least be on sys.path
+code='
 import yade
 from yade import O, utils
 O.bodies.append(utils.sphere((0, 0, 0), 1))
 O.dt = 1e-4
 O.run(10, True)
 print(yade.__file__, O.iter, len(O.bodies))
-') || fail "python3 -c \"import yade ...\""
-[[ "$out" == "/usr/lib/python3/dist-packages/yade/__init__.py 10 1" ]] || fail "python3 -c 'import yade': $out"
-say "/usr/bin/python3 -c 'import yade ...': ok ($out)"
+'
+expected="$PYDIR/yade/__init__.py 10 1"
+if dpkg -s python3-yade >/dev/null 2>&1; then
+    env -u PYTHONPATH /usr/bin/python3 -c "import sys; assert '$PYDIR' in sys.path, sys.path" \
+        || fail "$PYDIR is not on /usr/bin/python3's sys.path"
+    out=$(env -u PYTHONPATH /usr/bin/python3 -c "import sys; sys.path.insert(0, '$PYDIR')
+$code") || fail "python3 -c \"import yade ...\""
+    [[ "$out" == "$expected" ]] || fail "python3 -c 'import yade': $out"
+    say "/usr/bin/python3 -c 'import yade ...': ok ($out; python3-yade is installed too, so $PYDIR was put first)"
+else
+    out=$(env -u PYTHONPATH /usr/bin/python3 -c "$code") || fail "python3 -c \"import yade ...\""
+    [[ "$out" == "$expected" ]] || fail "python3 -c 'import yade': $out"
+    say "/usr/bin/python3 -c 'import yade ...': ok ($out)"
+fi
 
 if [[ -e /usr/bin/yade-fast-batch ]]; then
     cat >table.txt <<'EOF'
@@ -133,8 +150,8 @@ if [[ "${KEEP:-0}" == 1 ]]; then
 else
     apt-get remove -y -qq "$PKG" >"$WORK/remove.log" 2>&1 || { cat "$WORK/remove.log"; fail "apt-get remove $PKG"; }
     installed_here=0
-    [[ ! -e /usr/bin/yade-fast && ! -e /usr/lib/python3/dist-packages/yade ]] \
-        || fail "files left after apt-get remove: $(ls -d /usr/bin/yade-fast* /usr/lib/python3/dist-packages/yade 2>/dev/null)"
+    [[ ! -e /usr/bin/yade-fast && ! -e $PYDIR && ! -e /usr/lib/python3/dist-packages/yade-fast.pth ]] \
+        || fail "files left after apt-get remove: $(ls -d /usr/bin/yade-fast* $PYDIR /usr/lib/python3/dist-packages/yade-fast.pth 2>/dev/null)"
     say "apt-get remove $PKG: ok, nothing left"
 fi
 say "PASSED (build ${build_s} s, $(stat -c %s "$deb") bytes, lintian $lintian_e E / $lintian_w W; $WORK)"

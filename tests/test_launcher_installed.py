@@ -68,3 +68,29 @@ def test_installed_copy_without_package(tmp_path):
     if r.returncode == 0:
         pytest.skip("a yade package is installed for /usr/bin/python3")
     assert r.returncode == 2 and "not installed" in r.stderr, r.stderr
+
+
+@pytest.mark.skipif(not (REPO / "yade-batch").is_file(), reason="no yade-batch")
+def test_installed_batch_copy_uses_the_private_package(tmp_path):
+    """yade-fast-batch beside yade-fast, the package in <prefix>/lib/yade-fast and another 'yade' first on
+    sys.path (as Debian's python3-yade): the batch module and the jobs' engine come from the private one."""
+    bindir = tmp_path / "bin"
+    bindir.mkdir()
+    shutil.copy(REPO / "yade", bindir / "yade-fast")
+    shutil.copy(REPO / "yade-batch", bindir / "yade-fast-batch")
+    (tmp_path / "lib" / "yade-fast").mkdir(parents=True)
+    (tmp_path / "lib" / "yade-fast" / "yade").symlink_to(BUILD / "yade")
+    stub = tmp_path / "other" / "yade"
+    stub.mkdir(parents=True)
+    (stub / "__init__.py").write_text("raise ImportError('the other yade was imported')\n")
+    (tmp_path / "s.py").write_text("readParamsFromTable(a=0)\nfrom yade.params import table\nprint('A', table.a, yade.__file__)\n")
+    (tmp_path / "t.table").write_text("a\n7\n")
+    env = dict(os.environ)
+    env.pop("YADE_BUILD_DIR", None)
+    env.pop("OMP_NUM_THREADS", None)
+    env["PYTHONPATH"] = str(stub.parent)
+    r = subprocess.run(["/usr/bin/python3", str(bindir / "yade-fast-batch"), "--no-http", "-j", "1", "t.table", "s.py"],
+                       capture_output=True, text=True, timeout=120, env=env, cwd=str(tmp_path))
+    assert r.returncode == 0, r.stdout + r.stderr
+    log = (tmp_path / "s.py.a=7.log").read_text()
+    assert "A 7 " + str(tmp_path / "lib" / "yade-fast" / "yade" / "__init__.py") in log, log
