@@ -116,14 +116,37 @@ void Omega::joinLoop() { // waits until the current run has ended
 }
 
 void Omega::pause() {
+    ++pauseCalls;
     stopRequested = true;
     if (!inLoopThread()) joinLoop();
 }
 
-bool Omega::interrupt() {
+void Omega::loopWaitsForGui(bool waits) {
+    std::lock_guard<std::mutex> lock(mutex);
+    guiAwaited = waits;
+}
+
+bool Omega::interrupt(bool yieldToLoop) {
     if (!running) return false;
-    pause();
-    return endedByRequest && !error;
+    const bool askedBefore = stopRequested;
+    const long long calls = pauseCalls;
+    if (yieldToLoop && !inLoopThread()) {
+        ++pauseCalls;
+        stopRequested = true;
+        std::unique_lock<std::mutex> lock(mutex);
+        while (!stopped.wait_for(lock, std::chrono::milliseconds(20), [this] { return !running; }))
+            // the loop thread cannot reach the end of its step while it waits (it sets guiAwaited back
+            // under this mutex), so taking the request back here is safe; not when the script asked too
+            if (guiAwaited && !askedBefore && pauseCalls == calls + 1) {
+                stopRequested = false;
+                return false;
+            }
+    } else {
+        pause();
+    }
+    // not to be resumed when the script asked for the stop too (O.pause() in a PyRunner while the view
+    // held the run between two steps): one pause call more than this one's
+    return !askedBefore && pauseCalls == calls + 1 && endedByRequest && !error;
 }
 
 void Omega::wait() {

@@ -24,7 +24,11 @@ public:
     void run(long long nSteps = -1, bool quietError = false);
     void pause(); // stops after the current step; from the loop thread it only requests the stop
     // Stops the loop if it runs; true if it was still running (not ended by itself) and so may be resumed.
-    bool interrupt();
+    // yieldToLoop (the 3D view's frames): gives up instead, returning false with the loop still running,
+    // when the loop waits for the GUI meanwhile (loopWaitsForGui: a PyRunner's makeVideo waiting for the
+    // snapshots the GUI saves), as waiting for each other would stall both; isRunning() then stays true.
+    bool interrupt(bool yieldToLoop = false);
+    void loopWaitsForGui(bool waits);
     void wait();  // blocks until the loop stops; rethrows what stopped it
     // Waits at most `timeout` for the loop to stop (rethrows nothing); true if it is stopped.
     bool waitFor(std::chrono::milliseconds timeout);
@@ -55,6 +59,8 @@ private:
     std::thread loopThread;
     std::thread::id loopThreadId;
     std::atomic<bool> running{false}, stopRequested{false}, quiet{false}, endedByRequest{false};
+    std::atomic<long long> pauseCalls{0};
+    bool guiAwaited = false; // (guarded by mutex) the loop thread waits for the GUI // (interrupt() tells whether someone else asked for the stop too)
     std::exception_ptr error;
     std::string errorSource; // (guarded by mutex)
     mutable std::mutex mutex;

@@ -441,3 +441,15 @@ def test_a_shape_no_drawing_functor_draws_is_named_once(tmp_path):
     """)
     assert out["messages"] == ["yade.qt: no drawing functor draws Shape bodies (a Gl1_Shape class); they are not drawn"]
     assert out["red"][0] > 150  # the others are drawn
+
+
+def test_tutorial_05_makes_its_video_from_the_snapshots(tmp_path):
+    """examples/tutorial/05-3d-postprocessing.py as the manual gives it, with its 3D view: the SnapshotEngine's
+    100 frames (the last taken in the step finish() runs in) become 3d.mpeg, and the run stops at 20 000."""
+    script = os.path.join(ROOT, "examples", "tutorial", "05-3d-postprocessing.py")
+    out = run(tmp_path, """
+        exec(open(%r).read())
+        O.run(); O.wait()
+        print(json.dumps(dict(iter=O.iter, frames=len(snapshot.snapshots), video=os.path.getsize('3d.mpeg'))))
+    """ % script, launcher=True)
+    assert out["iter"] == 20001 and out["frames"] == 100 and out["video"] > 10000

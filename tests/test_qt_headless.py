@@ -322,3 +322,20 @@ def test_display_frame_gathers_what_the_view_draws():
     assert d['undrawn'] == {'Shape'} and d['drawer'][0] == -1 and d['drawer'][cid] == -2
     assert all(d['drawers'][d['drawer'][i]] == 'Gl1_Sphere' for i in ids)
     O.reset()
+
+
+def test_a_script_pause_while_the_view_holds_the_run_stops_it():
+    """A frame holds the run between two steps and resumes it after; an O.pause() the script made meanwhile
+    (a PyRunner, here one that takes 0.2 s, during which the frame waits) wins: the run stays stopped."""
+    from yade import _yade
+    O.reset()
+    O.bodies.append(utils.sphere((0, 0, 0), 0.5))
+    O.engines = [PyRunner(command='import time; from yade import O; time.sleep(.2); O.pause()', iterPeriod=50)]
+    O.dt = 1e-3
+    O.run()
+    frames = 0
+    while O.running and frames < 400:
+        _yade._displayFrame(pauseRun=True)
+        frames += 1
+    O.wait()
+    assert O.iter == 51 and frames < 400

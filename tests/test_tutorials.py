@@ -329,3 +329,53 @@ def test_04_shear_phase_within_the_references_runs(tmp_path):
 def test_04_writes_the_plot(tutorial04):
     d, r = tutorial04
     check_png(d / 't.plot.png')
+
+
+# ====================================================================== 05: 3d postprocessing (VTK files)
+
+SUFFIX_05 = """\
+O.run(); O.wait()
+H = O.cell.hSize
+print('END %d %d' % (O.iter, len(O.bodies)))
+print('CELL ' + ' '.join('%.17g' % H[i, j] for i in range(3) for j in range(3)))
+print('REAL %d' % len([i for i in O.interactions if i.isReal]))
+"""
+
+
+@pytest.fixture(scope='module')
+def tutorial05(tmp_path_factory):
+    d = tmp_path_factory.mktemp('t05')
+    return d, run_tutorial(d, '05-3d-postprocessing.py', SUFFIX_05)
+
+
+def test_05_writes_the_vtk_series_paraview_reads(tutorial05):
+    """Without a view (-n) the tutorial stops at 20 000 steps, and its VTKRecorder wrote 21 files of each kind
+    (every 1 000 steps, the first at step 0) and a .pvd per kind; the last files hold the final state."""
+    vtk = pytest.importorskip('vtk')
+    from vtk.util.numpy_support import vtk_to_numpy
+    d, r = tutorial05
+    it, n = (int(x) for x in printed(r, 'END'))
+    assert it == 20001
+    for kind, ext in (('spheres', 'vtu'), ('intrs', 'vtp'), ('pericell', 'vtu')):
+        files = sorted(d.glob('3d-vtk-%s.*.%s' % (kind, ext)))
+        assert len(files) == 21
+        pvd = (d / ('3d-vtk-%s.pvd' % kind)).read_text()
+        assert pvd.count('<DataSet ') == 21 and ('file="3d-vtk-%s.20000.%s"' % (kind, ext)) in pvd
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(d / '3d-vtk-spheres.20000.vtu'))
+    reader.Update()
+    spheres = reader.GetOutput()
+    assert spheres.GetNumberOfPoints() == n
+    H = np.array([float(x) for x in printed(r, 'CELL')]).reshape(3, 3)
+    frac = np.linalg.solve(H, vtk_to_numpy(spheres.GetPoints().GetData()).T)
+    assert ((frac >= 0) & (frac < 1)).all()  # written inside the cell
+    reader.SetFileName(str(d / '3d-vtk-pericell.20000.vtu'))
+    reader.Update()
+    corners = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+    # the cell written in the last step before the end: the one printed, less one step of shrinking
+    assert np.allclose(corners.max(axis=0), np.diag(H), rtol=1e-4) and np.diag(H).max() < 2 * .99
+    chains = vtk.vtkXMLPolyDataReader()
+    chains.SetFileName(str(d / '3d-vtk-intrs.20000.vtp'))
+    chains.Update()
+    assert chains.GetOutput().GetNumberOfLines() > 0
+    assert abs(chains.GetOutput().GetNumberOfLines() - int(printed(r, 'REAL')[0])) <= 5  # (one step later)

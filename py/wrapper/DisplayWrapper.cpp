@@ -63,9 +63,10 @@ static ShapeDrawers& shapeDrawers() {
 
 template <class T> static py::array_t<T> array(std::vector<py::ssize_t> shape) { return py::array_t<T>(shape); }
 
-static py::dict displayFrame(bool pauseRun, bool contacts, bool pairs) {
+static py::object displayFrame(bool pauseRun, bool contacts, bool pairs) {
     std::unique_ptr<BetweenSteps> between;
-    if (pauseRun) between = std::make_unique<BetweenSteps>();
+    if (pauseRun) between = std::make_unique<BetweenSteps>(/*yieldToLoop*/ true);
+    if (between && !between->held()) return py::none(); // the loop waits for the GUI: no frame this time
     const Scene& s = omega().scene();
     const BodyContainer& bodies = s.bodies;
     const py::ssize_t n = (py::ssize_t)bodies.size();
@@ -188,7 +189,8 @@ void bindDisplay(py::module_& m) {
           "highlight, mask, boundMin and boundMax (NaN without a bound); undrawn (the shape classes no functor draws); "
           "triangleBody and triangleCorners (world coordinates: facets); contactIds and contactFn (signed normal "
           "force normalForce·normal, positive in compression); pairIds (every pair); cellHSize (None when not periodic); "
-          "iter; time. pauseRun: stop a background run at the end of its step meanwhile (for as long as the copy takes); "
+          "iter; time. pauseRun: stop a background run at the end of its step meanwhile (for as long as the copy takes; None "
+          "instead of a frame when the run's thread waits for the GUI meanwhile: a PyRunner's makeVideo); "
           "contacts, pairs: gather those (else the arrays are empty: a frame that draws no contact pauses the run less).");
 }
 

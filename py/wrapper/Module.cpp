@@ -79,6 +79,9 @@ PYBIND11_MODULE(_yade, m) {
         pybind11::object r = take(file, e.format, e.deadTimeout);
         return r.is_none() ? std::string(yade::SnapshotEngine::noView) : r.cast<std::string>();
     });
+    m.def("_loopWaitsForGui", [](bool waits) { yade::omega().loopWaitsForGui(waits); },
+          "The simulation's thread says it waits for the GUI (yade.qt._waitForSnapshots): the 3D view's frames do not "
+          "wait for the end of its step meanwhile");
     // Engine warnings become Python RuntimeWarnings (shown once per message by default).
     yade::setWarningSink([](const std::string& msg) {
         pybind11::gil_scoped_acquire gil;

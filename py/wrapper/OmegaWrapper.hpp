@@ -14,12 +14,16 @@ void bindOmega(pybind11::module_& m);
 // the loop (a PyRunner) the change happens at once, between two engines.
 class BetweenSteps {
 public:
-    BetweenSteps() {
+    // yieldToLoop: the 3D view's frames, which give up (held() false) rather than wait for a loop that
+    // waits for the GUI (Omega::interrupt).
+    explicit BetweenSteps(bool yieldToLoop = false) {
         Omega& o = omega();
         if (o.inLoopThread() || !o.isRunning()) return;
         pybind11::gil_scoped_release nogil;
-        resume = o.interrupt();
+        resume = o.interrupt(yieldToLoop);
+        held_ = !o.isRunning();
     }
+    bool held() const { return held_; }
     ~BetweenSteps() {
         if (!resume) return;
         pybind11::gil_scoped_release nogil;
@@ -29,7 +33,7 @@ public:
     BetweenSteps& operator=(const BetweenSteps&) = delete;
 
 private:
-    bool resume = false;
+    bool resume = false, held_ = true;
 };
 
 // Makes labeled engines and functors reachable by name from scripts (builtins namespace).

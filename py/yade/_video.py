@@ -33,6 +33,9 @@ def makeVideo(frameSpec, out, renameNotOverwrite=True, fps=24, kbps=6000, bps=No
     :param int kbps: bit rate in kb/s (bps, in b/s, wins when given)
     :return: the name of the video written
     """
+    import sys
+    if 'yade.qt' in sys.modules:  # frames a SnapshotEngine took may still be waiting to be saved
+        sys.modules['yade.qt']._waitForSnapshots()
     frames = _frames(frameSpec)
     if not frames:
         raise ValueError("makeVideo: no frames match %r" % (frameSpec,))

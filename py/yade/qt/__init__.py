@@ -189,14 +189,37 @@ def _saveSnapshots():
             file, frame = _pending.get_nowait()
         except queue.Empty:
             return
-        v = next((v for v in _views if v._widget is not None), None)
-        if v is None:
-            warnings.warn("SnapshotEngine: the 3D view was closed before %s could be saved" % file, RuntimeWarning)
-            continue
         try:
-            v._widget.saveSnapshot(file, frame)
-        except OSError as e:
-            warnings.warn("SnapshotEngine: %s" % e, RuntimeWarning)
+            v = next((v for v in _views if v._widget is not None), None)
+            if v is None:
+                warnings.warn("SnapshotEngine: the 3D view was closed before %s could be saved" % file, RuntimeWarning)
+                continue
+            try:
+                v._widget.saveSnapshot(file, frame)
+            except OSError as e:
+                warnings.warn("SnapshotEngine: %s" % e, RuntimeWarning)
+        finally:
+            _pending.task_done()
+
+
+def _waitForSnapshots(timeout=30.):
+    """Until the snapshots taken so far are saved (utils.makeVideo, before it reads them): saved here in the
+    main thread; from the simulation's thread (a PyRunner), waits for the main thread to save them (it does
+    while O.run(n, True) or O.wait() waits, or at the prompt), at most `timeout` seconds."""
+    if noView:
+        return
+    if threading.current_thread() is threading.main_thread():
+        _saveSnapshots()
+        return
+    import time
+    from yade import _yade
+    end = time.monotonic() + timeout
+    _yade._loopWaitsForGui(True)  # (the view's frames do not wait for this step to end meanwhile)
+    try:
+        while _pending.unfinished_tasks and time.monotonic() < end:
+            time.sleep(.02)
+    finally:
+        _yade._loopWaitsForGui(False)
 
 
 def _takeSnapshot(file, format, timeout):

@@ -69,6 +69,10 @@ class ViewWidget(QtWidgets.QOpenGLWidget):
         t0 = time.perf_counter()
         r = self.renderer  # (contacts gathered only when drawn: the run pauses for less)
         frame = self.frameOverride if self.frameOverride is not None else _yade._displayFrame(contacts=r.intrPhys, pairs=r.intrAllWire)
+        if frame is None:  # the run's thread waits for the GUI (a PyRunner's makeVideo): the last frame again
+            frame = self.frame
+            if frame is None:
+                return
         self.frame = frame
         ratio = self.devicePixelRatioF()
         w, h = int(self.width() * ratio), int(self.height() * ratio)

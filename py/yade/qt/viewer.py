@@ -127,7 +127,10 @@ class GLViewer:
         """Centers the view on the scene (median=True: on the bodies' median position); suggestedRadius > 0
         sets the scene's radius."""
         from yade import _yade
-        c, r = sceneBox(_yade._displayFrame(contacts=False, pairs=False), median=median)
+        frame = _yade._displayFrame(contacts=False, pairs=False)
+        if frame is None:  # the run's thread waits for the GUI: centered at the next call
+            return
+        c, r = sceneBox(frame, median=median)
         self._camera.sceneCenter = numpy.asarray(c, dtype=float)
         self._camera.sceneRadius = float(suggestedRadius) if suggestedRadius > 0 else r
         self._camera.showEntireScene()
