@@ -21,16 +21,17 @@ fail() { say "FAILED: $*"; exit 1; }
 [[ "$(id -u)" -eq 0 ]] || fail "run as root (apt-get install and remove): sudo bash $0"
 export DEBIAN_FRONTEND=noninteractive
 
+is_installed() { [[ "$(dpkg-query -W -f='${Status}' "$PKG" 2>/dev/null || true)" == *" installed" ]]; }
 installed_here=0
 cleanup() {
-    if [[ "$installed_here" -eq 1 && "${KEEP:-0}" != 1 ]] && dpkg -s "$PKG" >/dev/null 2>&1; then
+    if [[ "$installed_here" -eq 1 && "${KEEP:-0}" != 1 ]]; then
         say "removing $PKG after a failure"
-        apt-get remove -y -qq "$PKG" >/dev/null 2>&1 || true
+        apt-get remove -y -qq "$PKG" >/dev/null 2>&1 || dpkg --remove "$PKG" >/dev/null 2>&1 || true
     fi
 }
 trap cleanup EXIT
 
-if dpkg -s "$PKG" >/dev/null 2>&1; then
+if is_installed; then
     fail "$PKG is installed already (apt-get remove $PKG first): this test installs and removes it"
 fi
 
@@ -149,7 +150,8 @@ if [[ "${KEEP:-0}" == 1 ]]; then
     say "KEEP=1: $PKG stays installed"
 else
     apt-get remove -y -qq "$PKG" >"$WORK/remove.log" 2>&1 || { cat "$WORK/remove.log"; fail "apt-get remove $PKG"; }
-    installed_here=0
+    is_installed() { [[ "$(dpkg-query -W -f='${Status}' "$PKG" 2>/dev/null || true)" == *" installed" ]]; }
+installed_here=0
     [[ ! -e /usr/bin/yade-fast && ! -e $PYDIR && ! -e /usr/lib/python3/dist-packages/yade-fast.pth ]] \
         || fail "files left after apt-get remove: $(ls -d /usr/bin/yade-fast* $PYDIR /usr/lib/python3/dist-packages/yade-fast.pth 2>/dev/null)"
     say "apt-get remove $PKG: ok, nothing left"
