@@ -9,7 +9,8 @@ cd "$REPO"
 PACKAGES=(build-essential cmake g++ libeigen3-dev pybind11-dev python3-dev
           python3-numpy python3-pytest ipython3 python3-matplotlib libgtest-dev time ccache
           zlib1g-dev libbz2-dev libzstd-dev pkg-config
-          python3-pyqt5 python3-opengl libgl1-mesa-dri xvfb xauth ffmpeg)  # (the last line: the optional GUI, doc/gui.md)
+          python3-pyqt5 python3-opengl libgl1-mesa-dri xvfb xauth ffmpeg  # the optional GUI, doc/gui.md
+          libvtk9-dev python3-vtk9)  # optional VTK output (doc/vtk.md); python3-vtk9: the tests read the files back
 
 missing=()
 for p in "${PACKAGES[@]}"; do

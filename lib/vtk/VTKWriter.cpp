@@ -1,4 +1,5 @@
 #include <lib/vtk/VTKWriter.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 #ifdef YADE_HAVE_VTK
@@ -45,13 +46,14 @@ static vtkSmartPointer<vtkDataSet> toVtk(const VtkPiece& p) {
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints((vtkIdType)p.numPoints());
-    for (size_t i = 0; i < p.numPoints(); ++i) points->SetPoint((vtkIdType)i, &p.points[3 * i]);
+    std::copy(p.points.begin(), p.points.end(), static_cast<double*>(points->GetVoidPointer(0)));
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     auto offsets = vtkSmartPointer<vtkIdTypeArray>::New(), conn = vtkSmartPointer<vtkIdTypeArray>::New();
     offsets->SetNumberOfTuples((vtkIdType)p.numCells() + 1);
     conn->SetNumberOfTuples((vtkIdType)p.connectivity.size());
-    for (size_t c = 0; c <= p.numCells(); ++c) offsets->SetValue((vtkIdType)c, (vtkIdType)(c * p.pointsPerCell));
-    for (size_t i = 0; i < p.connectivity.size(); ++i) conn->SetValue((vtkIdType)i, (vtkIdType)p.connectivity[i]);
+    vtkIdType* o = offsets->GetPointer(0);
+    for (size_t c = 0; c <= p.numCells(); ++c) o[c] = (vtkIdType)(c * p.pointsPerCell);
+    std::copy(p.connectivity.begin(), p.connectivity.end(), conn->GetPointer(0));
     cells->SetData(offsets, conn);
     vtkSmartPointer<vtkDataSet> data;
     if (p.polyData) {
