@@ -7,9 +7,19 @@ import os
 import sys
 import warnings
 
-import numpy
-
 from ._yade import O, _sphereColumns
+
+
+class _LazyNumpy:
+    """numpy, imported at its first use (the launcher imports NumPy lazily: a script that never uses it starts faster)."""
+
+    def __getattr__(self, name):
+        import numpy as np
+        return getattr(np, name)
+
+
+numpy = _LazyNumpy()
+
 
 __all__ = ['text', 'textExt', 'textClumps', 'VTKExporter']
 
