@@ -218,6 +218,8 @@ class Filler:
             return [[Vector3(k, k + 1, .25), Vector3(0, k, .5)]]
         if isinstance(val, list) and name == 'snapshots':  # SnapshotEngine: file names
             return [['frame-%04d.png' % k, 'frame-%04d.png' % (k + 1)]]
+        if isinstance(val, list) and name == 'recorders':  # VTKRecorder: names of recorders
+            return [['spheres', 'velocity'], ['intr', 'stress', 'ids'][k % 2:]]
         if isinstance(val, list) and name not in ('functors', 'callbacks'):  # a list of ints (PartialEngine.ids)
             return [[k, k + 1, k + 5]]
         return []
