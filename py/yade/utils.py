@@ -15,7 +15,7 @@ __all__ = ['sphere', 'facet', 'wall', 'box', 'aabbWalls', 'aabbWall', 'defaultMa
            'angularMomentum', 'maxOverlapRatio', 'numIntrsOfEachBody', 'intrsOfEachBody', 'getBodyIdsContacts', 'psd', 'setRefSe3',
            'shiftBodies', 'calm', 'randomizeColors', 'highlightNone', 'wireAll', 'wireNone', 'wireNoSpheres', 'setBodyPosition',
            'setBodyVelocity', 'setBodyAngularVelocity', 'setBodyOrientation', 'setBodyColor', 'runningInBatch', 'replaceCollider',
-           'facetBox', 'facetCylinder', 'makeVideo', 'encodeVideoFromFrames']
+           'facetBox', 'facetCylinder', 'makeVideo', 'encodeVideoFromFrames', 'aabbExtrema2d']
 
 
 def typedEngine(name):
@@ -269,6 +269,28 @@ def aabbDim(cutoff=0.0, centers=False):
     """Size (max - min) of aabbExtrema(cutoff, centers)."""
     lo, hi = aabbExtrema(cutoff, centers)
     return tuple(hi - lo)
+
+
+def aabbExtrema2d(pts):
+    """The 2d bounding box ((xmin, ymin), (xmax, ymax)) of a sequence of points: 2-tuples, Vector2 (or longer
+    points, of which the first two coordinates count). Unlike the reference, whose loop updates the maximum of a
+    coordinate only when that point did not lower its minimum (so that it returns, e.g., ((0, -1), (2, -inf))
+    for [(0, 1), (2, -1)]), each coordinate's minimum and maximum are both taken over all points. An empty
+    sequence (the reference: ((inf, inf), (-inf, -inf))), a point of fewer than 2 coordinates or a NaN
+    coordinate (which the reference skips silently) raise ValueError."""
+    xs, ys = [], []
+    for k, p in enumerate(pts):
+        try:
+            x, y = p[0], p[1]
+        except (IndexError, TypeError):
+            raise ValueError('aabbExtrema2d: point %d has fewer than 2 coordinates: %r' % (k, p)) from None
+        if x != x or y != y:
+            raise ValueError('aabbExtrema2d: point %d has a NaN coordinate: %r' % (k, p))
+        xs.append(x)
+        ys.append(y)
+    if not xs:
+        raise ValueError('aabbExtrema2d: no points')
+    return ((min(xs), min(ys)), (max(xs), max(ys)))
 
 
 def inscribedCircleCenter(v1, v2, v3):
