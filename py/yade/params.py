@@ -52,53 +52,6 @@ def _omega():
     return O
 
 
-def _stripComment(line):
-    i = line.find('#')
-    return line if i < 0 else line[:i]
-
-
-def _parseTable(fileName, lineNo):
-    """Return (column names, list of expression strings) for line lineNo (1-based) of the table file.
-
-    '=' values are replaced by the value of the same column in the previous data line."""
-    with open(fileName) as f:
-        lines = f.read().splitlines()
-    headers = None
-    prev = None
-    for i, raw in enumerate(lines, start=1):
-        words = _stripComment(raw).split()
-        if not words:
-            if i == lineNo:
-                break
-            continue
-        if headers is None:
-            headers = words
-            if i == lineNo:
-                break
-            continue
-        if len(words) != len(headers):
-            if i == lineNo:
-                raise ValueError('Table %s, line %d: %d values for %d columns (%s)'
-                                 % (fileName, i, len(words), len(headers), ' '.join(headers)))
-            prev = None  # a malformed line cannot be repeated with '='
-            continue
-        vals = []
-        for j, w in enumerate(words):
-            if w == '=':
-                if prev is None:
-                    if i == lineNo:
-                        raise ValueError("Table %s, line %d: '=' in column %s has no value above to repeat"
-                                         % (fileName, i, headers[j]))
-                    w = None
-                else:
-                    w = prev[j]
-            vals.append(w)
-        prev = vals
-        if i == lineNo:
-            return headers, vals
-    raise RuntimeError("Table %s doesn't contain valid line number %d" % (fileName, lineNo))
-
-
 def _evalNamespace():
     ns = {'__builtins__': __builtins__}
     ns.update((k, getattr(math, k)) for k in dir(math) if not k.startswith('_'))
@@ -176,20 +129,17 @@ def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **k
             lineNo = int(lineStr)
         except ValueError:
             raise ValueError("tableFileLine must be 'file:lineNumber', got %r" % tableFileLine)
-        headers, exprs = _parseTable(fileName, lineNo)
-        description = None
+        from .batch import readTable  # (the table format yade-batch reads: one parser for both)
+        table = readTable(fileName)
+        if lineNo in table.bad:
+            raise ValueError('Table %s, line %d: %s' % (fileName, lineNo, table.bad[lineNo]))
+        if lineNo not in table.lines:
+            raise RuntimeError("Table %s doesn't contain valid line number %d" % (fileName, lineNo))
+        line = table.lines[lineNo]
         assigned = []
-        for name, expr in zip(headers, exprs):
-            if name == 'description':
-                description = expr
-                continue
-            if name.startswith('!'):  # a column for yade-batch (!THREADS, !SCRIPT...), not a parameter
-                continue
+        for name, expr in line.params():  # (neither description nor the '!' columns of yade-batch)
             if name not in kw and not unknownOk:
                 raise NameError("Parameter `%s' has no default value assigned" % name)
-            if expr is None:
-                raise ValueError("Table %s, line %d: '=' in column %s has no value above to repeat"
-                                 % (fileName, lineNo, name))
             assigned.append((name, expr))
         ns = _evalNamespace()
         for name, expr in assigned:
@@ -201,9 +151,7 @@ def readParamsFromTable(tableFileLine=None, noTableOk=True, unknownOk=False, **k
                 raise
         nRead = len(assigned)
         params = ','.join('%s=%s' % (n, e) for n, e in assigned)
-        if description is None:  # as yade-batch names the job: all the columns, '!' and quotes dropped
-            description = ','.join('%s=%s' % (n.lstrip('!'), e) for n, e in zip(headers, exprs) if n != 'description')
-            description = description.replace("'", '').replace('"', '')
+        description = line.description  # (as yade-batch names the job)
         _setTag(O, 'line', 'l%d' % lineNo)
         _setTag(O, 'description', description)
         _setTag(O, 'params', params)
