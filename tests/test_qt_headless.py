@@ -333,9 +333,12 @@ def test_a_script_pause_while_the_view_holds_the_run_stops_it():
     O.engines = [PyRunner(command='import time; from yade import O; time.sleep(.2); O.pause()', iterPeriod=50)]
     O.dt = 1e-3
     O.run()
+    import time
+    end = time.monotonic() + 30
     frames = 0
-    while O.running and frames < 400:
+    while O.running and time.monotonic() < end:  # (without the fix the view resumed the run: it never stopped)
         _yade._displayFrame(pauseRun=True)
         frames += 1
-    O.wait()
-    assert O.iter == 51 and frames < 400
+    running = O.running
+    O.pause()
+    assert not running and O.iter == 51 and frames > 0
