@@ -1,12 +1,14 @@
 """Reading bodies from files (as in Yade's yade.ymport): spheres from text files (text, textExt),
-facets from text files (textFacets) and from STL surfaces (stl, ASCII or binary). Each function
+facets from text files (textFacets), from STL surfaces (stl, ASCII or binary), MEDIT meshes (gmsh), I-DEAS universal
+files (unv) and OpenFOAM meshes (blockMeshDict, polyMesh). Each function
 returns a list of bodies to give to O.bodies.append(), except textClumps, which adds its clumps itself."""
+import math
 import struct
 
 from ._yade import O, Quaternion, Vector3
 from . import utils
 
-__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh', 'blockMeshDict', 'polyMesh']
+__all__ = ['text', 'textExt', 'textClumps', 'textFacets', 'stl', 'gmsh', 'unv', 'blockMeshDict', 'polyMesh']
 
 
 class ImportFormatError(ValueError):
@@ -30,11 +32,13 @@ def _rows(filename):
     return rows, fileFormat
 
 
-def _numbers(filename, n, fields, count, what):
-    if len(fields) < count:
-        raise ImportFormatError('%s:%d: %s needs %d columns, the line has %d' % (filename, n, what, count, len(fields)))
+def _numbers(filename, n, fields, count, what, kind=float, exact=False):
+    """The first `count` fields of line n as numbers of type `kind` (all of them and exactly `count` if `exact`)."""
+    if len(fields) < count or (exact and len(fields) != count):
+        raise ImportFormatError('%s:%d: %s needs %s%d columns, the line has %d'
+                                % (filename, n, what, 'exactly ' if exact else '', count, len(fields)))
     try:
-        return [float(x) for x in fields[:count]]
+        return [kind(x) for x in fields[:count]]
     except ValueError as e:
         raise ImportFormatError('%s:%d: %s' % (filename, n, e))
 
@@ -199,6 +203,149 @@ def gmsh(meshfile='file.mesh', shift=Vector3.Zero, scale=1.0, orientation=Quater
         if min(t) < 0 or max(t) >= len(vertices):
             raise ImportFormatError('%s: a triangle refers to vertex %d, there are %d' % (meshfile, max(t) + 1, len(vertices)))
     return [utils.facet([vertices[i] for i in t], **kw) for t in triangles]
+
+
+# I-DEAS universal files (.unv): datasets, each between two lines '-1', its number on the line after the first.
+_UNV_BEAMS = (11, 21, 22, 23, 24, 31, 32)  # FE descriptors (rods, beams, pipes) whose element has a beam record
+_UNV_TRIANGLE = 41  # plane stress linear triangle: the one element the reference makes facets of
+_UNV_FACES = frozenset(d for t in range(40, 100, 10) for d in range(t + 1, t + 7))  # 2D elements: 41-46, ..., 91-96
+
+
+def _unvDatasets(fileName):
+    """[(dataset number, line of its opening -1, [(line number, fields), ...] of its non-empty lines)] of a .unv file."""
+    with open(fileName, errors='replace') as f:
+        lines = f.read().splitlines()
+    if not any(line.strip() for line in lines):
+        raise ImportFormatError('%s: empty file, no UNV dataset in it' % fileName)
+    datasets, i = [], 0
+    while i < len(lines):
+        if not lines[i].strip():
+            i += 1
+            continue
+        if lines[i].split() != ['-1']:
+            raise ImportFormatError('%s:%d: expected the line -1 that opens a dataset, got %r'
+                                    % (fileName, i + 1, lines[i].strip()[:60]))
+        start = i + 1
+        head = lines[i + 1].split() if i + 1 < len(lines) else []
+        if not head or head == ['-1']:
+            raise ImportFormatError('%s:%d: a dataset opened by -1 has no dataset number on the next line' % (fileName, start))
+        try:
+            number = int(head[0])
+        except ValueError:
+            raise ImportFormatError('%s:%d: the dataset number %r is not an integer' % (fileName, start + 1, head[0]))
+        body, k = [], i + 2
+        while k < len(lines) and lines[k].split() != ['-1']:
+            if lines[k].strip():
+                body.append((k + 1, lines[k].split()))
+            k += 1
+        if k >= len(lines):
+            raise ImportFormatError('%s:%d: dataset %d is not closed by a line -1 (the file is cut short?)'
+                                    % (fileName, start, number))
+        datasets.append((number, start, body))
+        i = k + 1
+    return datasets
+
+
+def unv(fileName, shift=(0, 0, 0), scale=1.0, returnConnectivityTable=False, **kw):
+    r"""Import geometry from unv file, return list of created facets.
+
+    :param string fileName: name of unv file
+    :param (float,float,float)|Vector3 shift: (X,Y,Z) parameter moves the specimen.
+    :param float scale: factor scales the given data.
+    :param \*\*kw: (unused keyword arguments) is passed to :yref:`yade.utils.facet`
+    :param bool returnConnectivityTable: if True, apart from facets returns also nodes (list of (x,y,z) nodes
+        coordinates) and elements (list of (id1,id2,id3) element nodes ids). If False (default), returns only facets
+
+    unv files are mainly used for FEM analyses (OOFEM, Abaqus); they can be created e.g. with Salome. Read here: the
+    nodes of every dataset 2411 (in the file's order, shift + scale·(x, y, z); Fortran 'D' exponents accepted) and
+    the elements of every dataset 2412; each linear triangle of FE descriptor 41 (plane stress, what Salome writes)
+    becomes utils.facet of its 3 nodes in their order, and (id1, id2, id3) are indices into the list of nodes. As in
+    the reference, other elements are skipped: other triangles (e.g. 91, thin shell, as gmsh writes them),
+    quadrilaterals (44, 94), beams, solids; skipped 2D elements give a RuntimeWarning. Other datasets (units 164,
+    coordinate systems 2420, groups 2467, ...) are skipped.
+
+    Unlike the reference, an element's nodes are found by their labels (the reference takes label - 1 as an index,
+    which is right only for nodes numbered 1, 2, 3... in order), the elements after a skipped one are read (the
+    reference loses some: the two triangles after one skipped 2D or solid element, in the files tried), 'D'
+    exponents are read (a ValueError there), and a bad file raises ImportFormatError (a ValueError) naming the file
+    and line, before any facet is made: an empty file or one that is not UNV (an empty list there), a dataset
+    without its opening or closing -1 line (read anyway there when at the file's start or end), a field that is not
+    a number or a coordinate that is not finite, a node label defined twice, an element referring to a node no
+    dataset 2411 defines (an IndexError there, or node 0 taken as the last one), a record with too few or too many
+    fields, a triangle with other than 3 nodes (the first 3 there), with a node twice or of zero area."""
+    datasets = _unvDatasets(fileName)
+    shift = Vector3(shift)
+    coords, index = [], {}  # the nodes' coordinates as in the file; node label -> index in coords
+    for number, _, body in datasets:
+        if number != 2411:
+            continue
+        if len(body) % 2:
+            raise ImportFormatError('%s:%d: dataset 2411 ends with a node record without its coordinates line'
+                                    % (fileName, body[-1][0]))
+        for (n1, f1), (n2, f2) in zip(body[0::2], body[1::2]):
+            label = _numbers(fileName, n1, f1, 4, "a node's record (label, coordinate systems, color)", int, True)[0]
+            if label in index:
+                raise ImportFormatError('%s:%d: node %d is defined twice' % (fileName, n1, label))
+            xyz = _numbers(fileName, n2, [x.replace('D', 'E').replace('d', 'e') for x in f2], 3, "a node's coordinates",
+                           float, True)
+            if not all(math.isfinite(x) for x in xyz):
+                raise ImportFormatError("%s:%d: node %d's coordinates are not finite" % (fileName, n2, label))
+            index[label] = len(coords)
+            coords.append(Vector3(*xyz))
+    triangles, skipped = [], {}  # [(i1, i2, i3)] indices in coords; skipped 2D elements: FE descriptor -> count
+    for number, _, body in datasets:
+        if number != 2412:
+            continue
+        r = 0
+        while r < len(body):
+            n, f = body[r]
+            label, kind, _, _, _, count = _numbers(fileName, n, f, 6, 'an element record (label, FE descriptor, physical and '
+                                                   'material properties, color, number of nodes)', int, True)
+            if count < 1:
+                raise ImportFormatError('%s:%d: element %d has %d nodes' % (fileName, n, label, count))
+            r += 1
+            if kind in _UNV_BEAMS:  # the beam record: orientation node, end releases
+                if r >= len(body):
+                    raise ImportFormatError('%s:%d: element %d (a beam) has no beam record after it' % (fileName, n, label))
+                _numbers(fileName, body[r][0], body[r][1], 3, 'the beam record of element %d' % label, int, True)
+                r += 1
+            labels = []
+            while len(labels) < count:
+                if r >= len(body):
+                    raise ImportFormatError('%s:%d: element %d has %d nodes, the dataset ends after %d'
+                                            % (fileName, n, label, count, len(labels)))
+                nr, fr = body[r]
+                for x in _numbers(fileName, nr, fr, len(fr), 'a line of node labels', int):
+                    if x not in index:
+                        raise ImportFormatError('%s:%d: element %d refers to node %d, which no dataset 2411 defines'
+                                                % (fileName, nr, label, x))
+                    labels.append(x)
+                r += 1
+            if len(labels) != count:
+                raise ImportFormatError('%s:%d: element %d has %d nodes, its node lines list %d'
+                                        % (fileName, n, label, count, len(labels)))
+            if kind == _UNV_TRIANGLE:
+                if count != 3:
+                    raise ImportFormatError('%s:%d: element %d, a linear triangle (FE descriptor 41), has %d nodes, not 3'
+                                            % (fileName, n, label, count))
+                ids = tuple(index[x] for x in labels)
+                v = [coords[i] for i in ids]
+                if len(set(labels)) < 3 or (v[1] - v[0]).cross(v[2] - v[0]).norm() == 0:
+                    raise ImportFormatError('%s:%d: element %d is a triangle of zero area (nodes %s)'
+                                            % (fileName, n, label, ' '.join(str(x) for x in labels)))
+                triangles.append(ids)
+            elif kind in _UNV_FACES:
+                skipped[kind] = skipped.get(kind, 0) + 1
+    if skipped:
+        import warnings
+        what = ', '.join('%d element%s of FE descriptor %d' % (c, 's' if c > 1 else '', d) for d, c in sorted(skipped.items()))
+        warnings.warn('ymport.unv: %s: skipped %s: as in the reference, only linear triangles of FE descriptor 41 become '
+                      'facets' % (fileName, what), RuntimeWarning, stacklevel=2)
+    nodes = [shift + scale * v for v in coords]
+    facets = [utils.facet([nodes[i] for i in t], **kw) for t in triangles]
+    if returnConnectivityTable:
+        return facets, [tuple(v) for v in nodes], triangles
+    return facets
 
 
 # OpenFOAM dictionaries: comments removed, then tokens, with '(' ')' '{' '}' ';' as tokens of their own.
