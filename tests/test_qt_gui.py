@@ -350,8 +350,10 @@ def test_launcher_prompt_opens_the_controller_and_f11_f12_keys_open_windows(tmp_
         readUntil(b"WINDOWS 1 True END", 30)
         os.write(fd, b"exit()\r")
     finally:
+        # the whole group (pty.fork made the child a session leader): xvfb-run's Xvfb too, which killing
+        # xvfb-run alone left running
         try:
-            os.kill(pid, 9)
+            os.killpg(pid, 9)
         except OSError:
             pass
         os.waitpid(pid, 0)
