@@ -313,7 +313,9 @@ def test_04_shear_phase_within_the_references_runs(tmp_path):
     1.57 from its looser start), tanPhi spans -0.566 .. -0.637 (four runs), both widened by 30 %."""
     run_copy(tmp_path, tutorial04_copy(seeded=False))
     s = saved_series(tmp_path)
-    assert s['exz'][0] == 0 and s['exz'][-1] > .5 and (np.diff(s['exz']) >= -1e-15).all()
+    # (the run stops when the checker, every second of wall time, sees the strain past .5; the history is
+    # recorded every 100 steps, so its last point may lie up to 100 steps before: 0.4997 once under ASan)
+    assert s['exz'][0] == 0 and s['exz'][-1] > .49 and (np.diff(s['exz']) >= -1e-15).all()
     shear = (s['exz'] > .1) & (s['exz'] <= .5)
     assert shear.sum() > 250
     # the compaction reached the limit mean stress (5e5 Pa) before the shear started
