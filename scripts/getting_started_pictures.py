@@ -71,6 +71,15 @@ def renderVtk(folder, png):
         files = glob.glob(os.path.join(folder, 'vtk', 'deposition-%s.*.%s' % (kind, ext)))
         return max(files, key=lambda f: int(f.rsplit('.', 2)[1]))
 
+    def surfaceActor(source, color):
+        mapper = vtk.vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        mapper.ScalarVisibilityOff()
+        actor = vtk.vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(*color)
+        return actor
+
     def reader(cls, path):
         r = cls()
         r.SetFileName(path)
@@ -90,12 +99,7 @@ def renderVtk(folder, png):
     glyphs.SetColorModeToColorByScale()
     glyphs.Update()
     speed = spheres.GetPointData().GetArray('linVelLen')
-    sphereMapper = vtk.vtkPolyDataMapper()
-    sphereMapper.SetInputConnection(glyphs.GetOutputPort())
-    sphereMapper.ScalarVisibilityOff()
-    sphereActor = vtk.vtkActor()
-    sphereActor.SetMapper(sphereMapper)
-    sphereActor.GetProperty().SetColor(.55, .7, .9)
+    sphereActor = surfaceActor(glyphs, (.55, .7, .9))
     sphereActor.GetProperty().SetOpacity(.25)
 
     chains = reader(vtk.vtkXMLPolyDataReader, last('intrs', 'vtp')).GetOutput()
@@ -122,12 +126,7 @@ def renderVtk(folder, png):
     scaled = scale.GetOutput()
     scaled.GetPointData().SetActiveScalars('tubeRadius')
     tubes.SetInputData(scaled)
-    tubeMapper = vtk.vtkPolyDataMapper()
-    tubeMapper.SetInputConnection(tubes.GetOutputPort())
-    tubeMapper.ScalarVisibilityOff()
-    tubeActor = vtk.vtkActor()
-    tubeActor.SetMapper(tubeMapper)
-    tubeActor.GetProperty().SetColor(.8, .1, .1)
+    tubeActor = surfaceActor(tubes, (.8, .1, .1))
 
     box = reader(vtk.vtkXMLUnstructuredGridReader, last('facets', 'vtu')).GetOutput()
     boxMapper = vtk.vtkDataSetMapper()
