@@ -125,7 +125,7 @@ void Scene::beginStep() {
     interactions.iterNow = iter;
     if (trackEnergy) energy.resetInstantaneous();
     if (isPeriodic) cell->integrate(dt);
-    newContactBodies.clear();
+    newContacts.clear();
     failedEngine.clear();
 }
 

@@ -44,9 +44,9 @@ public:
     // themselves in another scene (engine objects can be reused after O.reset()).
     const long long serial;
     std::map<std::string, std::string> tags;
-    // Bodies that got a new contact during the current step (filled by InteractionLoop, read by
-    // the integrator's stability guard), cleared at the start of each step.
-    std::vector<Body::id_t> newContactBodies;
+    // The contacts made during the current step, as entries of O.interactions (filled by
+    // InteractionLoop, read by the integrator's stability guard), cleared at the start of each step.
+    std::vector<size_t> newContacts;
     // The skin protocol: whether the positions are as the integrator left them and how far bodies
     // moved, for the collider and the interaction loop (who writes, who reads, what invalidates
     // it: core/MotionRecord.hpp).

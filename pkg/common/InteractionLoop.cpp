@@ -594,10 +594,7 @@ bool InteractionLoop::makeNewContact(Scratch& sc, Contact& c, long k, std::strin
         c.geom = intrs.geom((size_t)k);
         c.phys = intrs.phys((size_t)k);
 #pragma omp critical(yadeNewContact)
-        {
-            s.newContactBodies.push_back(c.id1);
-            s.newContactBodies.push_back(c.id2);
-        }
+        s.newContacts.push_back((size_t)k);
     return true;
 }
 

@@ -30,31 +30,71 @@ bool contribution(const IGeom* g, const IPhys* p, int side, Vector3r& kt, Vector
     return true;
 }
 
-void lowest(const Body& b, const Vector3r& kt, const Vector3r& kr, CriticalStep& best) {
+// (the body's mass, inertia and blocked DOFs from the store's columns: no visit to its Body and State)
+void lowest(const BodyStore& h, Body::id_t id, const Vector3r& kt, const Vector3r& kr, CriticalStep& best) {
     if ((kt.array() <= 0).all() && (kr.array() <= 0).all()) return; // no contact: nothing to read
-    if (!b.isDynamic()) return;
-    const State& s = *b.state;
+    const int blocked = h.blockedDOFsMask[(size_t)id];
+    if (!h.exists[(size_t)id] || (blocked & State::DOF_ALL) == State::DOF_ALL) return; // (not dynamic)
     for (int i = 0; i < 6; ++i) {
         const Real K = i < 3 ? kt[i] : kr[i - 3];
-        const Real m = i < 3 ? s.mass() : s.inertia()[i - 3];
-        if (K <= 0 || (s.blockedDOFsMask() & (1 << i))) continue;
-        const CriticalStep c{std::sqrt(2.0) * std::sqrt(m / K), b.id, i}; // (3.5.18)
+        const Real m = i < 3 ? h.mass[(size_t)id] : h.inertia[(size_t)id][i - 3];
+        if (K <= 0 || (blocked & (1 << i))) continue;
+        const CriticalStep c{std::sqrt(2.0) * std::sqrt(m / K), id, i}; // (3.5.18)
         if (c.before(best)) best = c;
     }
 }
 } // namespace
 
-void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best) {
-    if (!scene.bodies.exists(id) || !scene.bodies[id]->isDynamic()) return; // (lowest() would find nothing: a facet's many partners are not read)
-    Vector3r kt = Vector3r::Zero(), kr = Vector3r::Zero(), ct, cr;
-    for (const auto& partner : scene.interactions.partnersOf(id)) {
+namespace {
+    bool isDynamic(const BodyStore& h, Body::id_t id) {
+        return id >= 0 && (size_t)id < h.size() && h.exists[(size_t)id] && (h.blockedDOFsMask[(size_t)id] & State::DOF_ALL) != State::DOF_ALL;
+    }
+    // A body's stiffness diagonals from all its contacts.
+    void sumsOfBody(const Scene& scene, Body::id_t id, bool asLastLoopSawThem, Vector3r& kt, Vector3r& kr) {
         const InteractionContainer& intrs = scene.interactions;
-        if (intrs.isReal(partner.k) && contribution(intrs.geom(partner.k), intrs.phys(partner.k), intrs.pairIds[2 * partner.k] == id ? 1 : 2, ct, cr)) {
-            kt += ct;
-            kr += cr;
+        Vector3r ct, cr;
+        kt = kr = Vector3r::Zero();
+        for (const auto& partner : intrs.partnersOf(id)) {
+            if (asLastLoopSawThem && !intrs.wasReal[partner.k]) continue; // (a contiguous flag: cheaper than isReal)
+            if (intrs.isReal(partner.k) && contribution(intrs.geom(partner.k), intrs.phys(partner.k), intrs.pairIds[2 * partner.k] == id ? 1 : 2, ct, cr)) {
+                kt += ct;
+                kr += cr;
+            }
         }
     }
-    lowest(*scene.bodies[id], kt, kr, best);
+} // namespace
+
+void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best, bool asLastLoopSawThem) {
+    const BodyStore& h = scene.bodies.hot();
+    if (!isDynamic(h, id)) return; // (lowest() would find nothing, and a facet's many partners are not read)
+    Vector3r kt, kr;
+    sumsOfBody(scene, id, asLastLoopSawThem, kt, kr);
+    lowest(h, id, kt, kr, best);
+}
+
+CriticalStep criticalStepOfNewContacts(const Scene& scene, const std::vector<size_t>& contacts, std::vector<Vector3r>& kTrans,
+        std::vector<Vector3r>& kRot) {
+    const BodyStore& h = scene.bodies.hot();
+    const InteractionContainer& intrs = scene.interactions;
+    if (kTrans.size() < h.size()) kTrans.resize(h.size(), Vector3r::Zero());
+    if (kRot.size() < h.size()) kRot.resize(h.size(), Vector3r::Zero());
+    CriticalStep best;
+    Vector3r ct, cr;
+    for (size_t k : contacts) {
+        if (k >= intrs.size() || !intrs.isReal(k)) continue;
+        for (int side = 1; side <= 2; ++side) {
+            const Body::id_t id = intrs.pairIds[2 * k + side - 1];
+            if (!isDynamic(h, id) || !contribution(intrs.geom(k), intrs.phys(k), side, ct, cr)) continue;
+            kTrans[id] += ct;
+            kRot[id] += cr;
+            CriticalStep estimate;
+            lowest(h, id, kTrans[id], kRot[id], estimate);
+            if (!(scene.dt > estimate.dt)) continue;
+            sumsOfBody(scene, id, true, kTrans[id], kRot[id]); // (the sums may hold contacts that ended: all its contacts now)
+            lowest(h, id, kTrans[id], kRot[id], best);
+        }
+    }
+    return best;
 }
 
 CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& ids) {
@@ -64,8 +104,14 @@ CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>&
 }
 
 CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem) {
+    std::vector<Vector3r> kTrans, kRot;
+    return criticalTimeStep(scene, asLastLoopSawThem, kTrans, kRot);
+}
+
+CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem, std::vector<Vector3r>& kTrans, std::vector<Vector3r>& kRot) {
     const size_t n = scene.bodies.size();
-    std::vector<Vector3r> kTrans(n, Vector3r::Zero()), kRot(n, Vector3r::Zero());
+    kTrans.assign(n, Vector3r::Zero());
+    kRot.assign(n, Vector3r::Zero());
     Vector3r ct, cr;
     const InteractionContainer& intrs = scene.interactions;
     for (size_t k = 0; k < intrs.size(); ++k) {
@@ -79,9 +125,10 @@ CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem) {
             }
     }
     CriticalStep best;
-    for (size_t id = 0; id < n; ++id)
+    const BodyStore& h = scene.bodies.hot();
+    for (size_t id = 0; id < n && id < h.size(); ++id)
         if (!kTrans[id].isZero(0) || !kRot[id].isZero(0)) // bodies without contacts: nothing to read
-            if (const auto& b = scene.bodies[(Body::id_t)id]) lowest(*b, kTrans[id], kRot[id], best);
+            lowest(h, (Body::id_t)id, kTrans[id], kRot[id], best);
     return best;
 }
 

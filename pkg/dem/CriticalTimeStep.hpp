@@ -20,9 +20,18 @@ struct CriticalStep {
 // asLastLoopSawThem: only the interactions InteractionLoop found real in its last pass (its
 // contiguous flags; the contacts whose forces it computes), instead of asking each interaction.
 CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem = false);
+// The same, keeping each body's stiffness diagonals (translations, rotations) in kTrans and kRot.
+CriticalStep criticalTimeStep(const Scene& scene, bool asLastLoopSawThem, std::vector<Vector3r>& kTrans, std::vector<Vector3r>& kRot);
+// The bodies of the contacts made in this step (entries of O.interactions), cheaply: each new
+// contact's stiffness is added to its bodies' sums in kTrans and kRot (those of the last full check,
+// and of the new contacts since); only a body whose sums give a critical step below O.dt is then
+// computed again from all its contacts (its sums replaced by those). A body's contacts that grew
+// stiffer since the last full check are thus seen at the next one.
+CriticalStep criticalStepOfNewContacts(const Scene& scene, const std::vector<size_t>& contacts, std::vector<Vector3r>& kTrans,
+        std::vector<Vector3r>& kRot);
 // The same for a few bodies only (those that just got a new contact): cost ∝ their contacts.
 CriticalStep criticalTimeStep(const Scene& scene, const std::vector<Body::id_t>& bodies);
-// One body's part of the above, kept in best if lower.
-void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best);
+// One body's part of the above, kept in best if lower (asLastLoopSawThem: as for the whole scene).
+void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best, bool asLastLoopSawThem = false);
 
 } // namespace yade

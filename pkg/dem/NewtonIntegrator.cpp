@@ -593,17 +593,6 @@ IntegratorStep NewtonIntegrator::prepareStep(Scene& s, const MotionRecord::Write
     return st;
 }
 
-// Inside the parallel region: the critical step of the bodies that got a new contact in this step
-// (any split between the threads: ties go to the smaller id), into crit.
-static void checkFreshContacts(const Scene& s, const std::vector<Body::id_t>& fresh, CriticalStep& crit) {
-    CriticalStep mine;
-#pragma omp for schedule(dynamic, 16) nowait
-    for (long k = 0; k < (long)fresh.size(); ++k) criticalStepOfBody(s, fresh[k], mine);
-#pragma omp critical(yadeCriticalStep)
-    if (mine.before(crit)) crit = mine;
-#pragma omp barrier
-}
-
 void NewtonIntegrator::action() {
     Scene& s = *scene;
     gatherForces(s);
@@ -611,13 +600,12 @@ void NewtonIntegrator::action() {
     if (clumps) Clump::sumForces(s);
     const EnergyTerms ids = energyTerms(s);
     // Before moving anything: the time step against the contacts' critical step: all contacts periodically and when O.dt
-    // changed, otherwise only the bodies that got a new contact in this step (cheap; split between the threads below).
+    // changed, otherwise the bodies of the contacts made in this step (cheap: against their stiffness sums kept since).
     CriticalStep crit;
     const bool full = stabilityCheckPeriod > 0 && (s.iter % stabilityCheckPeriod == 0 || s.dt != lastCheckedDt);
-    const std::vector<Body::id_t>& fresh = s.newContactBodies;
-    const bool checkFresh = stabilityCheckPeriod > 0 && !full && !fresh.empty();
     if (stabilityCheckPeriod > 0) lastCheckedDt = s.dt;
-    if (full) crit = criticalTimeStep(s, true);
+    if (full) crit = criticalTimeStep(s, true, stiffnessTrans, stiffnessRot);
+    else if (stabilityCheckPeriod > 0 && !s.newContacts.empty()) crit = criticalStepOfNewContacts(s, s.newContacts, stiffnessTrans, stiffnessRot);
     const long n = (long)s.bodies.size();
     const MotionRecord::Write motion = s.motion.beginWrite(n); // (the skin protocol: core/MotionRecord.hpp)
     const IntegratorStep st = prepareStep(s, motion);
@@ -628,7 +616,6 @@ void NewtonIntegrator::action() {
     long diverged = -1;
 #pragma omp parallel num_threads(threads) reduction(max : maxV2, maxMoved2, diverged)
     {
-        if (checkFresh) checkFreshContacts(s, fresh, crit);
         Extremes mine;
         if (!(st.dt > crit.dt)) integrateShare(st, n, threads, ids, mine); // (the same answer in every thread)
         maxV2 = std::max(maxV2, mine.maxV2);

@@ -65,6 +65,9 @@ private:
         bool any = false; // a dynamic body was integrated
     };
     std::vector<std::vector<EnergySums>> chunkSums; // per thread range, per chunk
+    // per body: its stiffness diagonals (translations, rotations) at the last full stability check, plus the contacts made
+    // since (the check of new contacts: pkg/dem/CriticalTimeStep.hpp)
+    std::vector<Vector3r> stiffnessTrans, stiffnessRot;
     std::vector<char> spinning; // per body, in a step: whether its orientation is turned by its spin (the second loop)
     struct EnergyTerms {
         int grav = -1, kin = -1, kinRot = -1, damp = -1;
