@@ -10,7 +10,7 @@ RUN = __name__ == '__main__'  # (before the star import, which sets __name__ in 
 from yade import *
 from yade.utils import *
 
-HEAVY = 1e20  # [kg/m³] the density of driven bodies
+HEAVY = 1e300  # [kg/m³] the density of driven bodies: their velocities do not change to the last bit
 
 
 def vec(v):

@@ -21,17 +21,17 @@ bool Law2_L3Geom_FrictPhys_ElPerfPl::goLocal(L3Geom& g, FrictPhys& p, Body::id_t
     const Vector3r uel = g.u - g.u0;
     if (uel[0] > 0 && !noBreak) return false;
     Vector3r F(p.kn * uel[0], p.ks * uel[1], p.ks * uel[2]);
-    if (!noSlip) { // Mohr-Coulomb: back onto the cone, the slip into u0
-        const Real maxFs = -F[0] * p.tangensOfFrictionAngle;
+    if (!noSlip) { // Mohr-Coulomb: back onto the cone (no shear force in tension), the slip into u0
+        const Real maxFs = -std::min(Real(0), F[0] * p.tangensOfFrictionAngle);
         const Real fs2 = F[1] * F[1] + F[2] * F[2];
         if (fs2 > maxFs * maxFs) {
             const Real ratio = maxFs / std::sqrt(fs2);
-            const Real slip1 = (1 - ratio) * uel[1], slip2 = (1 - ratio) * uel[2];
+            const Real slip1 = (1 - ratio) * F[1] / p.ks, slip2 = (1 - ratio) * F[2] / p.ks;
             g.u0[1] += slip1;
             g.u0[2] += slip2;
-            if (scene->trackEnergy) scene->energy.add(plastId, std::abs(F[1] * ratio * slip1 + F[2] * ratio * slip2));
             F[1] *= ratio;
             F[2] *= ratio;
+            if (scene->trackEnergy) scene->energy.add(plastId, std::abs(F[1] * slip1 + F[2] * slip2));
         }
     }
     if (scene->trackEnergy)
@@ -44,7 +44,7 @@ bool Law2_L3Geom_FrictPhys_ElPerfPl::goLocal(L3Geom& g, FrictPhys& p, Body::id_t
 void Law2_L3Geom_FrictPhys_ElPerfPl::applyLocal(const L3Geom& g, FrictPhys& p, Body::id_t id1, Body::id_t id2, const Vector3r& F,
         const Vector3r* T) const {
     const Vector3r globalF = g.trsf.transpose() * F;
-    p.normalForce = g.normal * F[0];
+    p.normalForce = g.normal.dot(globalF) * g.normal;
     p.shearForce = globalF - p.normalForce;
     const Vector3r b1 = g.normal * (g.refR1 + 0.5 * g.u[0]), b2 = -g.normal * (g.refR2 + 0.5 * g.u[0]);
     Vector3r t1 = b1.cross(globalF), t2 = b2.cross(-globalF);
