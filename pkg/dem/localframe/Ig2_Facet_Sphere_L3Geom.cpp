@@ -35,10 +35,16 @@ bool Ig2_Facet_Sphere_L3Geom::goContact(const Shape& s1, const Shape& s2, const 
     const Vector3r centre = toGlobal.transpose() * (k2.pos - k1.pos);
     const Vector3r nearest = nearestOnTriangle(centre, f.vertices[0], f.vertices[1], f.vertices[2]);
     const Vector3r toCentre = centre - nearest;
-    const Real dist = toCentre.norm();
+    Real dist = toCentre.norm();
     if (!c.geom && !force && dist >= radius) return false;
     if (!(dist > 0)) return false; // the centre in the facet's plane: no normal (the reference has none either)
-    const Vector3r normal = toGlobal * (toCentre / dist);
+    Vector3r localNormal = toCentre / dist;
+    const Real above = f.normal.dot(centre); // (the plane passes through the body's position)
+    if (std::abs(std::abs(above) - dist) <= 1e-12 * dist) { // on the face: the facet's normal, towards the centre
+        localNormal = above > 0 ? f.normal : Vector3r(-f.normal);
+        dist = std::abs(above);
+    }
+    const Vector3r normal = toGlobal * localNormal;
     const Vector3r contPt = k1.pos + toGlobal * nearest;
     handleSpheresLikeContact(c, k1, k2, normal, contPt, dist - radius, 0, radius);
     return true;

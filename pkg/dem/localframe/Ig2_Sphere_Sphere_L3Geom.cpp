@@ -2,6 +2,7 @@
 #include <pkg/common/Sphere.hpp>
 #include <pkg/dem/localframe/Ig2_Sphere_Sphere_L3Geom.hpp>
 #include <pkg/dem/localframe/L6Geom.hpp>
+#include <pkg/dem/localframe/LocalFrameMath.hpp>
 
 namespace yade {
 
@@ -27,10 +28,10 @@ void Ig2_Sphere_Sphere_L3Geom::goBatch(const BodyColumns& b, Contact* c, size_t 
 bool Ig2_Sphere_Sphere_L3Geom::goContact(const Shape& s1, const Shape& s2, const Kinematics& k1, const Kinematics& k2, bool force, Contact& c) {
     const Real r1 = static_cast<const Sphere&>(s1).radius, r2 = static_cast<const Sphere&>(s2).radius;
     const Vector3r relPos = k2.pos - k1.pos;
-    const Real dist = relPos.norm();
-    const Real uN = dist - (r1 + r2);
+    const Real dist = localframe::norm(relPos);
     if (!c.geom && !force && dist - std::abs(distFactor) * (r1 + r2) >= 0) return false; // not (yet) a contact
     const Vector3r normal = relPos / dist;
+    const Real uN = dist - (r1 + r2);
     const Vector3r contPt = k1.pos + (r1 + 0.5 * uN) * normal;
     handleSpheresLikeContact(c, k1, k2, normal, contPt, uN, r1, r2);
     return true;
@@ -41,7 +42,7 @@ Matrix3r Ig2_Sphere_Sphere_L3Geom::initialTrsf(const Vector3r& normal) {
     t.row(0) = normal;
     // y in the xz plane when |n_y| < |n_z|, else in the xy plane (deterministic)
     const Vector3r y = std::abs(normal.y()) < std::abs(normal.z()) ? normal.cross(Vector3r::UnitY()) : normal.cross(Vector3r::UnitZ());
-    t.row(1) = y.normalized();
+    t.row(1) = localframe::normalized(y);
     t.row(2) = normal.cross(t.row(1).transpose());
     return t;
 }
@@ -64,13 +65,13 @@ void Ig2_Sphere_Sphere_L3Geom::handleSpheresLikeContact(Contact& c, const Kinema
     const Real dt = scene->dt;
     const Vector3r prevNormal = g.trsf.row(0);
     Vector3r midNormal = (approxMask & 2) ? prevNormal : Vector3r(0.5 * (prevNormal + normal));
-    if (!(approxMask & 4) && !(approxMask & 2)) midNormal.normalize();
-    const Vector3r tilt = prevNormal.cross(normal);                                          // o_r
-    const Vector3r twist = midNormal * (midNormal.dot(0.5 * (k1.angVel + k2.angVel)) * dt); // o_t
+    if (!(approxMask & 4) && !(approxMask & 2)) midNormal = localframe::normalized(midNormal);
+    const Vector3r tilt = prevNormal.cross(normal);                                                      // o_r
+    const Vector3r twist = midNormal * (localframe::dot(midNormal, 0.5 * (k1.angVel + k2.angVel)) * dt); // o_t
     const Vector3r b1 = contPt - k1.pos; // (with noRatch too: the reference's rule, found by running it)
     const Vector3r b2 = noRatch ? Vector3r(-r2 * normal) : Vector3r(contPt - k2.pos);
     Vector3r relVel = (k2.vel + k2.angVel.cross(b2)) - (k1.vel + k1.angVel.cross(b1));
-    relVel -= midNormal.dot(relVel) * midNormal; // the normal part is computed directly
+    relVel -= localframe::dot(midNormal, relVel) * midNormal; // the normal part is computed directly
     const Matrix3r prevTrsf = g.trsf;
     Matrix3r trsf;
     trsf.row(0) = normal;
@@ -79,14 +80,18 @@ void Ig2_Sphere_Sphere_L3Geom::handleSpheresLikeContact(Contact& c, const Kinema
         trsf.row(i) = row - row.cross(tilt) - row.cross(twist);
     }
     if (trsfRenorm > 0 && scene->iter % trsfRenorm == 0) {
-        Quaternionr q(trsf);
-        q.normalize();
-        trsf = q.toRotationMatrix();
+        // orthonormal again (Gram-Schmidt from the normal, as the reference)
+        const Vector3r x = localframe::normalized(trsf.row(0));
+        Vector3r y = trsf.row(1);
+        y = localframe::normalized(y - localframe::dot(y, x) * x);
+        trsf.row(0) = x;
+        trsf.row(1) = y;
+        trsf.row(2) = x.cross(y);
     }
     const Matrix3r midTrsf = (approxMask & 1) ? prevTrsf : Matrix3r(Quaternionr(prevTrsf).slerp(0.5, Quaternionr(trsf)).toRotationMatrix());
-    g.u += midTrsf * (relVel * dt);
+    g.u += localframe::times(midTrsf, relVel) * dt;
     g.u[0] = uN; // not incremental
-    if (l6) static_cast<L6Geom&>(g).phi += midTrsf * (dt * (k2.angVel - k1.angVel));
+    if (l6) static_cast<L6Geom&>(g).phi += localframe::times(midTrsf, dt * (k2.angVel - k1.angVel));
     g.trsf = trsf;
     g.contactPoint = contPt;
     g.normal = normal;

@@ -1,5 +1,6 @@
 #include <core/Scene.hpp>
 #include <pkg/dem/localframe/Law2_L3Geom_FrictPhys_ElPerfPl.hpp>
+#include <pkg/dem/localframe/LocalFrameMath.hpp>
 
 namespace yade {
 
@@ -25,8 +26,8 @@ bool Law2_L3Geom_FrictPhys_ElPerfPl::goLocal(L3Geom& g, FrictPhys& p, Body::id_t
         const Real maxFs = -std::min(Real(0), F[0] * p.tangensOfFrictionAngle);
         const Real fs2 = F[1] * F[1] + F[2] * F[2];
         if (fs2 > maxFs * maxFs) {
-            const Real ratio = maxFs / std::sqrt(fs2);
-            const Real slip1 = (1 - ratio) * F[1] / p.ks, slip2 = (1 - ratio) * F[2] / p.ks;
+            const Real ratio = std::sqrt(maxFs * maxFs / fs2); // (so written, the reference's bits)
+            const Real slip1 = (1 - ratio) * uel[1], slip2 = (1 - ratio) * uel[2];
             g.u0[1] += slip1;
             g.u0[2] += slip2;
             F[1] *= ratio;
@@ -43,13 +44,13 @@ bool Law2_L3Geom_FrictPhys_ElPerfPl::goLocal(L3Geom& g, FrictPhys& p, Body::id_t
 
 void Law2_L3Geom_FrictPhys_ElPerfPl::applyLocal(const L3Geom& g, FrictPhys& p, Body::id_t id1, Body::id_t id2, const Vector3r& F,
         const Vector3r* T) const {
-    const Vector3r globalF = g.trsf.transpose() * F;
-    p.normalForce = g.normal.dot(globalF) * g.normal;
+    const Vector3r globalF = localframe::transposedTimes(g.trsf, F);
+    p.normalForce = localframe::dot(g.normal, globalF) * g.normal;
     p.shearForce = globalF - p.normalForce;
     const Vector3r b1 = g.normal * (g.refR1 + 0.5 * g.u[0]), b2 = -g.normal * (g.refR2 + 0.5 * g.u[0]);
     Vector3r t1 = b1.cross(globalF), t2 = b2.cross(-globalF);
     if (T) {
-        const Vector3r globalT = g.trsf.transpose() * *T;
+        const Vector3r globalT = localframe::transposedTimes(g.trsf, *T);
         t1 += globalT;
         t2 -= globalT;
     }
