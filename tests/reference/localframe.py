@@ -1,7 +1,8 @@
 # Scenes of the local-frame geometries (L3Geom, L6Geom, their Ig2 functors and the laws
 # Law2_L3Geom_FrictPhys_ElPerfPl, Law2_L6Geom_FrictPhys_Linear): a plain Yade script that runs unchanged
-# in the reference Yade and in this engine. Run as a script it prints, as JSON, what
-# tests/test_localframe.py compares: `yade -n -x -j1 localframe.py > data/localframe.json`.
+# in the reference Yade and in this engine. Run as a script it prints one JSON line, what
+# tests/test_localframe.py compares; the data file is made (in tests/reference/) with
+#   yade -n -x -j1 localframe.py 2>/dev/null | grep '^LOCALFRAME ' | sed 's/^LOCALFRAME //' > data/localframe.json
 import json
 import math
 
@@ -105,7 +106,7 @@ def on_facet(steps=40):
 
 
 def pile(steps=3000):
-    """free spheres falling on a wall under gravity (L3 law), the bodies' states at the end"""
+    """free spheres falling on a wall under gravity (L3 law), the bodies' states after 300, 1000 and `steps` steps"""
     O.reset()
     m = O.materials.append(mat0(0.5))
     O.bodies.append(wall((0, 0, 0), axis=2, material=m))
@@ -113,8 +114,12 @@ def pile(steps=3000):
         O.bodies.append(sphere((0.004 * (k % 3) - 0.004 + 0.0003 * k, 0.0011 * (k // 3), 0.012 + 0.019 * k), 0.01, material=m))
     engines([Ig2_Sphere_Sphere_L3Geom(), Ig2_Wall_Sphere_L3Geom()], Law2_L3Geom_FrictPhys_ElPerfPl(), gravity=(0, 0, -9.81))
     O.dt = 2e-5
-    O.run(steps, True)
-    return [vec(b.state.pos) + vec(b.state.vel) + vec(b.state.angVel) for b in O.bodies]
+    out = []
+    for n in (300, 1000, steps):
+        if n > O.iter:
+            O.run(n - O.iter, True)
+        out.append([vec(b.state.pos) + vec(b.state.vel) + vec(b.state.angVel) for b in O.bodies])
+    return out
 
 
 def scenes():
@@ -146,4 +151,4 @@ def scenes():
 
 
 if RUN:
-    print(json.dumps({name: f() for name, f in scenes().items()}))
+    print('LOCALFRAME ' + json.dumps({name: f() for name, f in scenes().items()}))
