@@ -89,10 +89,8 @@ def test_scene_equals_the_reference(name):
     here = scenes.scenes()[name]()
     ref = REFERENCE[name]
     assert len(here) == len(ref)
-    # approxMask=1 (the previous trsf turns the velocities) drifts from the reference by 4e-9 a step (doc/localframe.md)
-    rel = 1e-7 if name == 'approx1' else 1e-12
     for h, r in zip(here, ref):
-        assert_record(h, r, rel)
+        assert_record(h, r, 1e-12)
 
 
 def test_pile_falling_on_a_wall_equals_the_reference():

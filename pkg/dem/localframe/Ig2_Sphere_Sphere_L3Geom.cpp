@@ -88,7 +88,9 @@ void Ig2_Sphere_Sphere_L3Geom::handleSpheresLikeContact(Contact& c, const Kinema
         trsf.row(1) = y;
         trsf.row(2) = x.cross(y);
     }
-    const Matrix3r midTrsf = (approxMask & 1) ? prevTrsf : Matrix3r(Quaternionr(prevTrsf).slerp(0.5, Quaternionr(trsf)).toRotationMatrix());
+    // (approxMask 1: the previous trsf, through a quaternion as the slerp: the reference's numbers)
+    const Quaternionr prevOri(prevTrsf);
+    const Matrix3r midTrsf = ((approxMask & 1) ? prevOri : prevOri.slerp(0.5, Quaternionr(trsf))).toRotationMatrix();
     g.u += localframe::times(midTrsf, relVel) * dt;
     g.u[0] = uN; // not incremental
     if (l6) static_cast<L6Geom&>(g).phi += localframe::times(midTrsf, dt * (k2.angVel - k1.angVel));
