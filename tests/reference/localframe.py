@@ -105,6 +105,27 @@ def on_facet(steps=40):
     return [record(0, 1) for k in range(steps) if O.step() is None]
 
 
+def on_facet_edge(steps=40):
+    """a sphere driven across a facet's edge, then its vertex"""
+    O.reset()
+    m = O.materials.append(mat0(0.4, HEAVY))
+    O.bodies.append(facet([(0, 0, 0), (0.05, 0, 0), (0, 0.05, 0.01)], material=m))
+    O.bodies.append(sphere((0.02, -0.006, 0.008), 0.01, material=m))
+    driven(O.bodies[1], (0.5, 0.05, -0.1), (5, 20, -30))
+    engines([Ig2_Facet_Sphere_L3Geom()], Law2_L3Geom_FrictPhys_ElPerfPl())
+    O.dt = 1e-5
+    return [record(0, 1) for k in range(steps) if O.step() is None]
+
+
+def energy(steps=30):
+    """O.energy's elastPotential and plastDissip of a sliding contact"""
+    two_spheres(Ig2_Sphere_Sphere_L3Geom(), Law2_L3Geom_FrictPhys_ElPerfPl(), vel1=(0.01, 0.02, -0.005), ang1=(1., -2., 3.),
+                vel2=(-0.3, 0.25, 0.1), ang2=(-4., 0.5, 2.), frict=0.1, steps=0)
+    O.trackEnergy = True
+    O.run(steps, True)
+    return [O.energy['elastPotential'], O.energy['plastDissip']]
+
+
 def pile(steps=3000):
     """free spheres falling on a wall under gravity (L3 law), the bodies' states after 300, 1000 and `steps` steps"""
     O.reset()
@@ -146,7 +167,9 @@ def scenes():
         'l6elperfpl': lambda: two_spheres(L6(), ElPerfPl(), **motion, frict=0.1),
         'wall': lambda: on_wall(),
         'facet': lambda: on_facet(),
+        'facetEdge': lambda: on_facet_edge(),
         'pile': lambda: pile(),
+        'energy': lambda: energy(),
     }
 
 
