@@ -231,3 +231,23 @@ def test_the_references_own_core_tests():
     failed = set(eval(out.stdout.split('FAILED ')[1].splitlines()[0]))
     assert failed <= CORE_FAILING, out.stdout + out.stderr
     assert 'RESULT 24 ' in out.stdout
+
+
+def test_spheres_with_the_same_centre_give_finite_numbers():
+    """no normal: a new contact takes x, an existing one keeps its last normal (never NaN)"""
+    from yade import ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys, NewtonIntegrator
+    from yade.utils import sphere
+    O.bodies.append([sphere((0, 0, 0), 1), sphere((0, 0, 0), 1)])
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_L3Geom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_L3Geom_FrictPhys_ElPerfPl()]),
+                 NewtonIntegrator()]
+    O.dt = 1e-5
+    O.step()
+    g = O.interactions[0, 1].geom
+    assert tuple(g.normal) == (1, 0, 0) and g.u[0] == -2
+    O.bodies[1].state.pos = (0, 0, 1e-3)
+    O.run(3, True)
+    O.bodies[0].state.pos = O.bodies[1].state.pos
+    O.step()
+    g = O.interactions[0, 1].geom
+    assert all(math.isfinite(x) for x in list(g.normal) + list(g.u)) and g.normal[2] > 0.99

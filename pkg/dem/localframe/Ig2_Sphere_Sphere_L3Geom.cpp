@@ -30,7 +30,9 @@ bool Ig2_Sphere_Sphere_L3Geom::goContact(const Shape& s1, const Shape& s2, const
     const Vector3r relPos = k2.pos - k1.pos;
     const Real dist = localframe::norm(relPos);
     if (!c.geom && !force && dist - std::abs(distFactor) * (r1 + r2) >= 0) return false; // not (yet) a contact
-    const Vector3r normal = relPos / dist;
+    // Centres at the same point have no normal: the last one stays (x for a new contact). (Throwing here would abort the
+    // process: the geometry pass reports no exceptions. A non-finite position gives NaN, which the integrator reports.)
+    const Vector3r normal = dist != 0 ? Vector3r(relPos / dist) : c.geom ? Vector3r(static_cast<const L3Geom&>(*c.geom).trsf.row(0)) : Vector3r(Vector3r::UnitX());
     const Real uN = dist - (r1 + r2);
     const Vector3r contPt = k1.pos + (r1 + 0.5 * uN) * normal;
     handleSpheresLikeContact(c, k1, k2, normal, contPt, uN, r1, r2);
