@@ -251,3 +251,20 @@ def test_spheres_with_the_same_centre_give_finite_numbers():
     O.step()
     g = O.interactions[0, 1].geom
     assert all(math.isfinite(x) for x in list(g.normal) + list(g.u)) and g.normal[2] > 0.99
+
+
+def test_pile_with_two_threads_equals_the_reference(tmp_path):
+    """the parallel interaction loop (2 threads, the launcher's -j2) gives the reference's pile"""
+    script = tmp_path / 'pile2.py'
+    script.write_text('import importlib.util, json\n'
+                      'spec = importlib.util.spec_from_file_location("s", %r)\n'
+                      'm = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n'
+                      'print("PILE " + json.dumps(m.pile()))\n' % os.path.join(HERE, 'reference', 'localframe.py'))
+    launcher = os.path.join(os.path.dirname(HERE), 'yade')
+    out = subprocess.run([sys.executable, launcher, '-n', '-x', '-j', '2', str(script)], capture_output=True, text=True, timeout=120,
+                         env=dict(os.environ))
+    line = [x for x in out.stdout.splitlines() if x.startswith('PILE ')]
+    assert line, out.stdout + out.stderr
+    here, ref = np.array(json.loads(line[0][5:])), np.array(REFERENCE['pile'])
+    for h, r in zip(here, ref):
+        assert np.abs(h - r).max() <= 1e-12 * np.abs(r).max()
