@@ -165,6 +165,8 @@ def scenes():
         'twisted': lambda: two_spheres(L6(), Linear(charLen=0.3), ang1=(-5, -1.5, 1.), ang2=(5, 1.5, -1.)),
         'l6general': lambda: two_spheres(L6(), Linear(charLen=2.), **motion, steps=60),
         'l6elperfpl': lambda: two_spheres(L6(), ElPerfPl(), **motion, frict=0.1),
+        'l6separating': lambda: two_spheres(L6(), Linear(), vel2=(0.3, 0.1, 0.), gap=-2e-5, steps=20),
+        'l6noSlip': lambda: two_spheres(L6(), Linear(), vel2=(0.0, 0.5, 0.3), frict=0.05),
         'wall': lambda: on_wall(),
         'facet': lambda: on_facet(),
         'facetEdge': lambda: on_facet_edge(),
