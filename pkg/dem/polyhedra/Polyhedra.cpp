@@ -52,13 +52,16 @@ void Polyhedra::initialize() {
         R = eig.eigenvectors();
         if (R.determinant() < 0) R.col(2) = -R.col(2);
     }
-    centroid = m.centroid;
+    // vertices already centered (e.g. loaded from a file) are kept to the bit
+    Real size = 0;
+    for (const auto& p : pts) size = std::max(size, p.norm());
+    centroid = m.centroid.norm() <= 1e-13 * size ? Vector3r::Zero() : m.centroid;
     orientation = Quaternionr(R);
     orientation.normalize();
     v.clear();
     radius = 0;
     for (const auto& p : pts) {
-        v.push_back(R.transpose() * (p - m.centroid));
+        v.push_back(R.transpose() * (p - centroid));
         radius = std::max(radius, v.back().norm());
     }
     faces = hull.faces;
