@@ -291,3 +291,32 @@ def test_saved_and_loaded_scene_goes_on_the_same(tmp_path):
     b = O.bodies[1]
     assert len(b.shape.v) == 8
     assert tuple(b.state.pos) + tuple(b.state.vel) == pytest.approx(ref, rel=1e-12, abs=1e-15)
+
+
+def sphere_and_cube(center, r=0.3):
+    from yade import FrictMat, Ig2_Sphere_Polyhedra_ScGeom, Ip2_FrictMat_PolyhedraMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack, Bo1_Sphere_Aabb
+    pm = O.materials.append(PolyhedraMat(young=1e8, poisson=0.3, density=2000, frictionAngle=0.4))
+    fm = O.materials.append(FrictMat(young=3e7, poisson=0.2, density=1000, frictionAngle=0.3))
+    O.bodies.append(pu.polyhedra(pm, v=CUBE))
+    O.bodies.append(utils.sphere(center, r, material=fm))
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Polyhedra_ScGeom()], [Ip2_FrictMat_PolyhedraMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    O.step()
+    return O.interactions[0, 1]
+
+
+@pytest.mark.parametrize("center, depth, normal", [
+    ((0.7, 0, 0), 0.1, (-1, 0, 0)),  # a face
+    ((0.6, 0.55, 0), 0.3 - math.sqrt(0.1 ** 2 + 0.05 ** 2), unit(-0.1, -0.05, 0)),  # an edge
+    ((0.62, 0.6, 0.58), 0.3 - math.sqrt(0.12 ** 2 + 0.1 ** 2 + 0.08 ** 2), unit(-0.12, -0.1, -0.08)),  # a vertex
+    ((0.4, 0, 0), 0.3 + 0.1, (-1, 0, 0)),  # the center inside, 0.1 from the face x = 0.5 (the reference says 0.3: r)
+])
+def test_sphere_touches_the_closest_point_of_the_cube(center, depth, normal):
+    i = sphere_and_cube(Vector3(center))
+    assert (i.id1, i.id2) == (1, 0)  # the sphere is body 1
+    assert i.geom.penetrationDepth == pytest.approx(depth, rel=1e-12)
+    assert i.geom.normal == approx(normal, abs=1e-12)
+    assert i.geom.contactPoint == approx(Vector3(center) + (0.3 - depth / 2) * Vector3(normal), abs=1e-12)
+    assert i.phys.kn == pytest.approx(2 * 0.3 * 3e7 * 1e9 / (3e7 + 1e9))

@@ -70,3 +70,14 @@ def test_cube_on_facets_rests_at_the_reference_height():
     assert close(here['volume'], ref['volume'], 2e-5)
     assert close(here['normalForce'][2], ref['normalForce'][2], 1e-5)
     assert abs(here['pos'][0]) < 1e-12 and abs(here['pos'][1]) < 1e-12 and max(abs(x) for x in here['vel']) < 1e-9
+
+
+@pytest.mark.parametrize("name, center, kw", [('face', (0.7, 0, 0), {}), ('edge', (0.6, 0.55, 0), {}), ('vertex', (0.62, 0.6, 0.58), {}),
+                                              ('small', (0.58, 0, 0), {'r': 0.1}),
+                                              ('stiffer', (0.7, 0, 0), {'young': (2e8, 6e7), 'poisson': (0.5, 0.2)})])
+def test_sphere_on_a_cube_equals_the_reference(name, center, kw):
+    """Ig2_Sphere_Polyhedra_ScGeom and Ip2_FrictMat_PolyhedraMat_FrictPhys: the same bits as the reference (the sphere is body 1;
+    the reference's kn, ks take 1e9 Pa for the polyhedron's young, whatever PolyhedraMat.young is: 'stiffer' doubles it)"""
+    from yade import Vector3
+    here, ref = scenes.sphere_cube(Vector3(center), **kw), REFERENCE['sphere'][name]
+    assert here == ref

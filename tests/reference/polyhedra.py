@@ -73,6 +73,28 @@ def cube_pair(offset, axis, angle):
             'normalForce': vec(p.normalForce), 'force1': vec(O.forces.f(1))}
 
 
+def sphere_cube(center, r=0.3, young=(1e8, 3e7), poisson=(0.3, 0.2)):
+    """a sphere (FrictMat) touching a unit cube (PolyhedraMat) at a face, an edge, a vertex or with its center inside"""
+    O.reset()
+    pm = PolyhedraMat(young=young[0], poisson=poisson[0], density=2000, frictionAngle=0.4)
+    fm = FrictMat(young=young[1], poisson=poisson[1], density=1000, frictionAngle=0.3)
+    O.materials.append([pm, fm])
+    O.bodies.append(polyhedra_utils.polyhedra(pm, v=CUBE))
+    O.bodies.append(utils.sphere(center, r, material=fm))
+    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Sphere_Aabb()]),
+        InteractionLoop([Ig2_Sphere_Polyhedra_ScGeom()], [Ip2_FrictMat_PolyhedraMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+        NewtonIntegrator(damping=0)
+    ]
+    O.dt = 1e-6
+    O.step()
+    i = O.interactions[0, 1]
+    g, p = i.geom, i.phys
+    return {'ids': [i.id1, i.id2], 'penetrationDepth': g.penetrationDepth, 'normal': vec(g.normal), 'contactPoint': vec(g.contactPoint),
+            'refR': [g.refR1, g.refR2], 'kn': p.kn, 'ks': p.ks, 'tan': p.tangensOfFrictionAngle, 'force0': vec(O.forces.f(0))}
+
+
 def shapes():
     """volume, inertia, centroid and orientation of a few shapes given by their vertices"""
     out = {}
@@ -92,6 +114,13 @@ def scenes():
             'x': cube_pair(Vector3(0.9, 0, 0), Vector3(0, 0, 1), 0),
             'xy': cube_pair(Vector3(0.9, 0.8, 0), Vector3(0, 0, 1), 0),
             'rot45': cube_pair(Vector3(1.1, 0, 0), Vector3(0, 0, 1), pi / 4),
+        },
+        'sphere': {
+            'face': sphere_cube(Vector3(0.7, 0, 0)),
+            'edge': sphere_cube(Vector3(0.6, 0.55, 0)),
+            'vertex': sphere_cube(Vector3(0.62, 0.6, 0.58)),
+            'small': sphere_cube(Vector3(0.58, 0, 0), r=0.1),
+            'stiffer': sphere_cube(Vector3(0.7, 0, 0), young=(2e8, 6e7), poisson=(0.5, 0.2)),
         },
         'wall': cube_on('wall'),
         'facets': cube_on('facets'),
