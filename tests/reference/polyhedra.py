@@ -1,7 +1,7 @@
 # Scenes of the polyhedra family (Polyhedra, PolyhedraMat, Law2_PolyhedraGeom_PolyhedraPhys_Volumetric): a plain Yade
 # script that runs unchanged in the reference Yade and in this engine. Run as a script it prints, as JSON, what
-# tests/test_polyhedra_reference.py compares. Regenerate its data with:
-#   cd tests/reference && yade -n -x -j1 polyhedra.py > data/polyhedra.json
+# tests/test_polyhedra_reference.py compares. Regenerate its data (in tests/reference/) with:
+#   yade -n -x -j1 polyhedra.py 2>/dev/null | grep '^{' > data/polyhedra.json
 import json
 from math import pi
 
