@@ -211,6 +211,9 @@ class Filler:
         if isinstance(val, list) and name == 'vertices':  # a facet: a non-degenerate triangle
             a = self.real()
             return [[Vector3(a, 0, 0), Vector3(0, a + .1, 0), Vector3(0, 0, a + .2)]]
+        if isinstance(val, list) and name == 'v':  # Polyhedra: a box, centered and along its axes as Initialize() leaves it
+            a = self.real()
+            return [[Vector3(x * a, y * (a + .1), z * (a + .2)) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]]
         if isinstance(val, list) and name.endswith('Path'):  # Peri3dController: (time, value) points, times increasing
             a = self.real()
             return [[Vector2(a, a + .3), Vector2(a + 1, a + .7)]]
