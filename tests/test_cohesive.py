@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from yade import (O, CohFrictMat, CohFrictPhys, ScGeom6D, Ig2_Sphere_Sphere_ScGeom6D, Ip2_CohFrictMat_CohFrictMat_CohFrictPhys,
+from yade import (O, CohFrictMat, CohFrictPhys, ScGeom6D, Ig2_Sphere_Sphere_ScGeom6D, Ig2_Facet_Sphere_ScGeom6D, Ip2_CohFrictMat_CohFrictMat_CohFrictPhys,
                   Law2_ScGeom6D_CohFrictPhys_CohesionMoment, MatchMaker, Quaternion, Vector3)
 from yade.utils import sphere
 
@@ -111,6 +111,25 @@ def test_distant_bonds_equal_the_reference():
     here = scenes.distant()
     assert here[0][0] is not None and here[0][0]['geom'][0] < 0  # (a contact in tension)
     assert_close(here, REFERENCE['distant'], rel=1e-9, abs_=1e-9)
+
+
+def test_facet_contact_equals_the_reference():
+    """Ig2_Facet_Sphere_ScGeom6D: a sphere rolled, twisted and slid on a facet (the incremental moments, capped), then pulled off:
+    every step's forces, moments, rotations and the torques on the facet (lever arm from its centre to the contact point)"""
+    here = scenes.facetContact()
+    ref = REFERENCE['facet']
+    assert [r[0] is None for r in here[1:]] == [r[0] is None for r in ref[1:]]
+    assert_close(here, ref, rel=1e-9, abs_=1e-6)
+
+
+def test_energies_equal_the_reference():
+    """with O.trackEnergy, O.energy's shearDissip ((Fs_trial - Fs)·Fs/ks when sliding), bendingDissip and twistDissip (the same with
+    the capped moments and kr, ktw); plasticDissipation() sums the shear part with traceEnergy or O.trackEnergy; elasticEnergy() is
+    Σ Fn²/2kn + |Fs|²/2ks + |Mb|²/2kr + |Mt|²/2ktw, each part also alone"""
+    here = scenes.energy()
+    assert sorted(here) == sorted(REFERENCE['energy'])
+    for mode in here:
+        assert_close(here[mode], REFERENCE['energy'][mode], rel=1e-9, abs_=1e-9)
 
 
 # ---------------------------------------------------------------- analytic

@@ -207,8 +207,64 @@ def distant():
     return rows
 
 
+def facetContact():
+    """a very heavy sphere on a fixed facet, cohesive, moved at imposed velocities (rolling, twisting, sliding, then pulled off)"""
+    O.reset()
+    m = mat(etaRoll=0.05)
+    heavy = mat(etaRoll=0.05, density=1e20)
+    O.bodies.append(facet([(-5, -5, 0), (5, -5, 0), (0, 5, 0)], material=m))
+    O.bodies.append(sphere((0.3, 0.2, 0.99), 1.0, material=heavy))
+    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()]),
+        InteractionLoop([Ig2_Facet_Sphere_ScGeom6D()], [Ip2_CohFrictMat_CohFrictMat_CohFrictPhys(setCohesionOnNewContacts=True)],
+                        [Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=True)]),
+        NewtonIntegrator()
+    ]
+    O.dt = 1e-3
+    O.step()
+    rows = [state()]
+    for n, vel, angVel in [(4, (0, 0.5, 0), (0.3, 0, 0.2)), (4, (0.2, 0, 0), (0, -2, 1)), (30, (0, 0, 1), (0, 0, 0))]:
+        for k in range(n):
+            O.bodies[1].state.vel = vel
+            O.bodies[1].state.angVel = angVel
+            O.step()
+            rows.append([state(), vec(O.bodies[1].state.pos)])
+    return rows
+
+
+def energy():
+    """O.energy's dissipation terms (O.trackEnergy), plasticDissipation() (traceEnergy or O.trackEnergy) and the elastic energies of
+    a frictional contact with moments that slides, rolls and twists beyond its strengths"""
+    out = {}
+    for trace in (False, True):
+        for track in (False, True):
+            O.reset()
+            m = mat(etaRoll=0.01, etaTwist=0.02)
+            heavy = mat(etaRoll=0.01, etaTwist=0.02, density=1e20)
+            O.bodies.append([sphere((0, 0, 0), 1.0, material=heavy), sphere((1.99, 0, 0), 1.0, material=m)])
+            O.bodies[1].state.blockedDOFs = 'xyzXYZ'
+            law = Law2_ScGeom6D_CohFrictPhys_CohesionMoment(traceEnergy=trace, useIncrementalForm=True, always_use_moment_law=True)
+            engines(law=law, ip2=Ip2_CohFrictMat_CohFrictMat_CohFrictPhys())
+            O.trackEnergy = track
+            O.dt = 1e-3
+            O.step()
+            O.bodies[1].state.vel = (0, 1, 0)
+            O.bodies[1].state.angVel = (1, 0, 10)
+            rows = []
+            for k in range(12):
+                O.step()
+                terms = dict((n, float(v)) for n, v in O.energy.items() if n in ('shearDissip', 'bendingDissip', 'twistDissip'))
+                rows.append([[terms.get(n, 0.0) for n in ('shearDissip', 'bendingDissip', 'twistDissip')], law.plasticDissipation(),
+                             law.elasticEnergy(), law.normElastEnergy(), law.shearElastEnergy(), law.bendingElastEnergy(),
+                             law.twistElastEnergy()])
+            out['trace=%d track=%d' % (trace, track)] = rows
+    return out
+
+
 def everything():
-    return {'constants': constants(), 'motions': motions(), 'cohesionNow': cohesionNow(), 'cantilever': cantilever(), 'distant': distant()}
+    return {'constants': constants(), 'motions': motions(), 'cohesionNow': cohesionNow(), 'cantilever': cantilever(), 'distant': distant(),
+            'energy': energy(), 'facet': facetContact()}
 
 
 if RUN:

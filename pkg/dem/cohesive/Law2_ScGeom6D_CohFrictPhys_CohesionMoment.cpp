@@ -9,11 +9,30 @@ namespace yade {
 void Law2_ScGeom6D_CohFrictPhys_CohesionMoment::prepare() {
     if (shear_creep || twist_creep)
         throw std::runtime_error(getClassName() + ": shear_creep and twist_creep are not implemented in this engine; set them to False");
-    plastId = scene && (scene->trackEnergy || traceEnergy) ? scene->energy.term("plastDissip", true) : -1;
+    const bool track = scene && scene->trackEnergy;
+    shearId = track ? scene->energy.term("shearDissip", true) : -1;
+    bendingId = track ? scene->energy.term("bendingDissip", true) : -1;
+    twistId = track ? scene->energy.term("twistDissip", true) : -1;
 }
 
-void Law2_ScGeom6D_CohFrictPhys_CohesionMoment::dissipate(Real e) {
-    if (plastId >= 0 && e > 0) scene->energy.add(plastId, e);
+void Law2_ScGeom6D_CohFrictPhys_CohesionMoment::dissipate(int term, Real e) {
+    if (term >= 0) scene->energy.add(term, e);
+}
+
+Real Law2_ScGeom6D_CohFrictPhys_CohesionMoment::elasticEnergy(const Scene& scene, Spring which) {
+    const auto half = [](const Vector3r& f, Real k) { return k > 0 ? 0.5 * f.squaredNorm() / k : 0; };
+    const InteractionContainer& ic = scene.interactions;
+    Real e = 0;
+    for (size_t k = 0; k < ic.size(); ++k) {
+        if (!ic.isReal(k)) continue;
+        const auto* p = dynamic_cast<const CohFrictPhys*>(ic.phys(k));
+        if (!p) continue;
+        if (which == Spring::normal || which == Spring::all) e += half(p->normalForce, p->kn);
+        if (which == Spring::shear || which == Spring::all) e += half(p->shearForce, p->ks);
+        if (which == Spring::bending || which == Spring::all) e += half(p->moment_bending, p->kr);
+        if (which == Spring::twist || which == Spring::all) e += half(p->moment_twist, p->ktw);
+    }
+    return e;
 }
 
 bool Law2_ScGeom6D_CohFrictPhys_CohesionMoment::go(ScGeom6D& geom, CohFrictPhys& phys, const Contact& c) {
@@ -42,12 +61,19 @@ bool Law2_ScGeom6D_CohFrictPhys_CohesionMoment::go(ScGeom6D& geom, CohFrictPhys&
         }
         const Vector3r trial = fs;
         fs *= maxFs / std::sqrt(fs2);
-        if (plastId >= 0 && phys.ks > 0) dissipate((trial - fs).dot(fs) / phys.ks);
+        if ((traceEnergy || shearId >= 0) && phys.ks > 0) {
+            const Real e = (trial - fs).dot(fs) / phys.ks;
+#pragma omp atomic
+            plasticDissipation += e;
+            dissipate(shearId, e);
+        }
         if (fn < 0) phys.normalForce = Vector3r::Zero(); // (a sliding contact does not pull)
     }
-    const Vector3r f1 = -phys.normalForce - fs; // on body 1
-    const Vector3r arm = n.cross(f1);
-    Vector3r t1 = (geom.refR1 - 0.5 * un) * arm, t2 = (geom.refR2 - 0.5 * un) * arm;
+    // on body 1, at the contact point (a sphere's lever arm is (R - u/2)·n; a facet's, from its centre)
+    const Vector3r f1 = -phys.normalForce - fs;
+    const BodyStore::Columns cols = scene->bodies.hot().columns();
+    const Vector3r pos2 = c.shift ? Vector3r(cols.pos[c.id2] + c.shift->shift2) : Vector3r(cols.pos[c.id2]);
+    Vector3r t1 = (geom.contactPoint - cols.pos[c.id1]).cross(f1), t2 = (geom.contactPoint - pos2).cross(-f1);
     if (phys.momentRotationLaw && (!phys.cohesionBroken || always_use_moment_law)) {
         const Vector3r m = moments(geom, phys, c);
         t1 -= m;
@@ -70,9 +96,10 @@ Vector3r Law2_ScGeom6D_CohFrictPhys_CohesionMoment::moments(const ScGeom6D& geom
         phys.moment_bending = geom.rotated(phys.moment_bending) - phys.kr * bendVel * scene->dt;
     }
     const Real fn = phys.normalForce.norm();
-    const Real plastic = capMoment(phys.moment_bending, phys.maxRollPl, fn, phys.kr) + capMoment(phys.moment_twist, phys.maxTwistPl, fn, phys.ktw);
-    if (plastic > 0) {
-        if (plastId >= 0) dissipate(plastic);
+    const Real bending = capMoment(phys.moment_bending, phys.maxRollPl, fn, phys.kr), twist = capMoment(phys.moment_twist, phys.maxTwistPl, fn, phys.ktw);
+    if (bending > 0 || twist > 0) {
+        dissipate(bendingId, bending);
+        dissipate(twistId, twist);
         if (!useIncrementalForm) {
             static std::atomic<bool> warned{false};
             if (!warned.exchange(true))

@@ -34,17 +34,21 @@ public:
                                                                "CohFrictPhys.momentRotationLaw");
         v.attr("shear_creep", shear_creep, "Creep of the shear force (not implemented here: setting it is an error at the next step)");
         v.attr("twist_creep", twist_creep, "Creep of the twisting moment (not implemented here: setting it is an error at the next step)");
-        v.attr("traceEnergy", traceEnergy, "Sum the energy dissipated by sliding (and by plastic moments) in O.energy's plastDissip even "
-                                           "without O.trackEnergy");
+        v.attr("traceEnergy", traceEnergy, "Sum the energy dissipated by sliding in plasticDissipation() even without O.trackEnergy (with "
+                                           "O.trackEnergy it is summed anyway, and O.energy gets shearDissip, bendingDissip, twistDissip)");
         v.attr("useIncrementalForm", useIncrementalForm, "Moments from the increments of relative rotation (ω2 - ω1)·dt added to the "
                                                          "rotated moments, instead of from ScGeom6D's total twist and bending");
         v.attr("creep_viscosity", creep_viscosity, "Creep viscosity [Pa·s/m] (for shear_creep and twist_creep, not implemented here)");
     }
     void prepare() override; // energy terms; creep refused
     bool go(ScGeom6D& geom, CohFrictPhys& phys, const Contact& c);
+    Real plasticDissipation = 0; // energy dissipated by sliding, summed with traceEnergy or O.trackEnergy (Python: plasticDissipation())
+    // Python: the elastic energies of the CohFrictPhys contacts of a scene, Σ Fn²/(2kn), Σ |Fs|²/(2ks), Σ |Mb|²/(2kr), Σ |Mt|²/(2ktw)
+    enum class Spring { normal, shear, bending, twist, all };
+    static Real elasticEnergy(const Scene& scene, Spring which);
 
 private:
-    int plastId = -1; // O.energy's plastDissip
+    int shearId = -1, bendingId = -1, twistId = -1; // O.energy's shearDissip, bendingDissip, twistDissip (with O.trackEnergy)
     // the bond is gone: no adhesion any more
     static void breakBond(CohFrictPhys& phys) {
         phys.cohesionBroken = true;
@@ -54,7 +58,7 @@ private:
     Vector3r moments(const ScGeom6D& geom, CohFrictPhys& phys, const Contact& c);
     // caps the moment m at maxPl·|Fn| when maxPl >= 0; returns the energy dissipated
     static Real capMoment(Vector3r& m, Real maxPl, Real fn, Real stiffness);
-    void dissipate(Real e);
+    void dissipate(int term, Real e);
 };
 
 } // namespace yade
