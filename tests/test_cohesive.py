@@ -209,6 +209,56 @@ def test_twist_and_bending_are_the_relative_rotation():
     assert O.forces.t(1)[0] == pytest.approx(p.ktw * g.twist, rel=1e-12)  # restoring: opposite to the rotation
 
 
+def bonded_packing():
+    """a small cubic packing of bonded spheres, bent and twisted by a turning top layer"""
+    from yade import setNumThreads
+    O.materials.append(CohFrictMat(young=1e7, poisson=0.3, density=2600, normalCohesion=1e6, shearCohesion=1e6, momentRotationLaw=True,
+                                   etaRoll=0.1, etaTwist=0.1))
+    for i in range(4):
+        for j in range(4):
+            for k in range(4):
+                O.bodies.append(sphere((0.02 * i, 0.02 * j, 0.02 * k), 0.0101, fixed=(k == 0)))
+    scenes.engines(law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=True), damping=0.1)
+    O.dt = 2e-6
+    O.step()
+    for b in O.bodies:
+        if b.state.pos[2] > 0.05:
+            b.state.vel = (0.05, 0, 0)
+            b.state.angVel = (0, 0, 20)
+
+
+def snapshot():
+    return [tuple(b.state.pos) + tuple(b.state.angVel) for b in O.bodies]
+
+
+def test_a_saved_bonded_packing_continues_as_if_not_saved(tmp_path):
+    """ScGeom6D (orientations, twist, bending) and CohFrictPhys (bond, moments) are saved and loaded: the run goes on to the same bits"""
+    bonded_packing()
+    O.run(200, True)
+    path = str(tmp_path / 'bonded.yade')
+    O.save(path)
+    O.run(200, True)
+    here = snapshot()
+    assert len([i for i in O.interactions if i.isReal]) == 120  # (3·48 neighbours, less the 24 among the fixed bottom layer)
+    O.load(path)
+    O.run(200, True)
+    assert snapshot() == here
+
+
+def test_two_threads_give_the_one_thread_run():
+    """the law runs in the parallel interaction loop (forces through the ForceContainer): the same motion with 2 threads"""
+    from yade import setNumThreads
+    bonded_packing()
+    O.run(300, True)
+    one = snapshot()
+    O.reset()
+    setNumThreads(2)
+    bonded_packing()
+    O.run(300, True)
+    for a, b in zip(snapshot(), one):
+        assert a == pytest.approx(b, rel=1e-12, abs=1e-15)
+
+
 # ---------------------------------------------------------------- errors
 
 def test_bad_input_gives_clear_errors():
