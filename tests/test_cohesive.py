@@ -264,9 +264,14 @@ def test_two_threads_give_the_one_thread_run():
 def test_bad_input_gives_clear_errors():
     O.materials.append(CohFrictMat(momentRotationLaw=True))
     O.bodies.append([sphere((0, 0, 0), 1.0), sphere((1.99, 0, 0), 1.0)])
-    scenes.engines(law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(shear_creep=True))
+    scenes.engines(law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(twist_creep=True))
     O.dt = 1e-5
-    with pytest.raises(RuntimeError, match='shear_creep'):
+    with pytest.raises(RuntimeError, match='twist_creep'):
+        O.step()
+    O.engines[2].lawDispatcher.functors[0].twist_creep = False
+    O.engines[2].lawDispatcher.functors[0].shear_creep = True
+    O.engines[2].lawDispatcher.functors[0].creep_viscosity = 0
+    with pytest.raises(Exception, match='creep_viscosity'):
         O.step()
     O.reset()
     O.materials.append(CohFrictMat())

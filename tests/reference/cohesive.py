@@ -135,6 +135,8 @@ def motions():
                               law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(always_use_moment_law=True)),
         'noMomentsWithoutCohesion': pair([(3, Z, (0, 0, 1.))], cohesive=False),
         'frictionalPull': pair([(13, (1., 0, 0), Z)], cohesive=False),
+        'shearCreep': pair([(4, (0, 1., 0.2), (0, 0.5, 0)), (5, Z, Z)], law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(shear_creep=True,
+                                                                                                                  creep_viscosity=1e4)),
     }
 
 

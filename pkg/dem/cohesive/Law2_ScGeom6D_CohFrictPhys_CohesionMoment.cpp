@@ -7,8 +7,9 @@
 namespace yade {
 
 void Law2_ScGeom6D_CohFrictPhys_CohesionMoment::prepare() {
-    if (shear_creep || twist_creep)
-        throw std::runtime_error(getClassName() + ": shear_creep and twist_creep are not implemented in this engine; set them to False");
+    if (twist_creep) throw std::runtime_error(getClassName() + ": twist_creep is not implemented in this engine; set it to False");
+    if (shear_creep && !(creep_viscosity > 0))
+        throw std::invalid_argument(getClassName() + ": shear_creep needs a positive creep_viscosity, got " + std::to_string(creep_viscosity));
     const bool track = scene && scene->trackEnergy;
     shearId = track ? scene->energy.term("shearDissip", true) : -1;
     bendingId = track ? scene->energy.term("bendingDissip", true) : -1;
@@ -49,7 +50,9 @@ bool Law2_ScGeom6D_CohFrictPhys_CohesionMoment::go(ScGeom6D& geom, CohFrictPhys&
     phys.normalForce = fn * n;
     // shear: incremental (3.3.2), Mohr-Coulomb with adhesion
     Vector3r& fs = phys.shearForce;
-    fs = geom.rotated(fs) - phys.ks * geom.shearInc;
+    fs = geom.rotated(fs);
+    if (shear_creep) fs -= phys.ks * fs * (scene->dt / creep_viscosity); // the elastic shear displacement creeps: du/dt = -Fs/creep_viscosity
+    fs -= phys.ks * geom.shearInc;
     Real maxFs = phys.shearAdhesion;
     if (!phys.cohesionDisablesFriction || maxFs == 0) maxFs += fn * phys.tangensOfFrictionAngle;
     maxFs = std::max<Real>(0, maxFs);

@@ -32,13 +32,14 @@ public:
                                          "exceeded) becomes a potential interaction either way, as the reference does with neverErase");
         v.attr("always_use_moment_law", always_use_moment_law, "Moments at all contacts (true) or only at cohesive ones (false); both need "
                                                                "CohFrictPhys.momentRotationLaw");
-        v.attr("shear_creep", shear_creep, "Creep of the shear force (not implemented here: setting it is an error at the next step)");
+        v.attr("shear_creep", shear_creep, "Creep of the shear force: the elastic shear displacement relaxes as du/dt = -Fs/creep_viscosity, "
+                                           "i.e. Fs -= ks·Fs·dt/creep_viscosity at every step (unstable when ks·dt/creep_viscosity > 2)");
         v.attr("twist_creep", twist_creep, "Creep of the twisting moment (not implemented here: setting it is an error at the next step)");
         v.attr("traceEnergy", traceEnergy, "Sum the energy dissipated by sliding in plasticDissipation() even without O.trackEnergy (with "
                                            "O.trackEnergy it is summed anyway, and O.energy gets shearDissip, bendingDissip, twistDissip)");
         v.attr("useIncrementalForm", useIncrementalForm, "Moments from the increments of relative rotation (ω2 - ω1)·dt added to the "
                                                          "rotated moments, instead of from ScGeom6D's total twist and bending");
-        v.attr("creep_viscosity", creep_viscosity, "Creep viscosity [Pa·s/m] (for shear_creep and twist_creep, not implemented here)");
+        v.attr("creep_viscosity", creep_viscosity, "Creep viscosity of shear_creep [N·s/m] (positive)");
     }
     void prepare() override; // energy terms; creep refused
     bool go(ScGeom6D& geom, CohFrictPhys& phys, const Contact& c);
