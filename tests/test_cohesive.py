@@ -296,3 +296,20 @@ def test_the_references_own_cohesive_chain_test():
     if "No module named 'yade.gridpfacet'" in out.stderr:  # (its chain is made of chained cylinders, another family)
         pytest.skip('the reference\'s cohesive-chain.py builds its chain with yade.gridpfacet.chainedCylinder, not in this engine yet')
     assert 'RESULT 1 0 0' in out.stdout, out.stdout + out.stderr
+
+
+def test_cantilever_example(tmp_path):
+    """examples/cohesive-cantilever.py with the launcher prints the tip's deflection and rotation next to the beam of the contact
+    springs (the reference prints the same lines)"""
+    import pathlib
+    import re
+    repo = pathlib.Path(__file__).resolve().parent.parent
+    env = dict(os.environ)
+    env.setdefault('YADE_BUILD_DIR', str(repo / 'build'))
+    r = subprocess.run(['/usr/bin/python3', str(repo / 'yade'), '-n', '-x', str(repo / 'examples' / 'cohesive-cantilever.py')],
+                       capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    for what in ('deflection', 'rotation'):
+        found = re.search(r'tip %s\s+([-\d.e]+) \S+ \(beam of the contact springs: ([-\d.e]+)' % what, r.stdout)
+        assert found, r.stdout
+        assert float(found.group(1)) == pytest.approx(float(found.group(2)), rel=1e-6)
