@@ -122,6 +122,14 @@ def test_facet_contact_equals_the_reference():
     assert_close(here, ref, rel=1e-9, abs_=1e-6)
 
 
+def test_periodic_bond_across_the_cell_equals_the_reference():
+    """a bonded pair moving in a periodic cell, inside it and through its face: the reference's numbers, and the same forces
+    both ways (to the rounding of the positions)"""
+    here = scenes.periodic()
+    assert_close(here, REFERENCE['periodic'], rel=1e-9, abs_=1e-7)
+    assert_close(here[1], here[0], rel=1e-11, abs_=1e-7)
+
+
 def test_energies_equal_the_reference():
     """with O.trackEnergy, O.energy's shearDissip ((Fs_trial - Fs)·Fs/ks when sliding), bendingDissip and twistDissip (the same with
     the capped moments and kr, ktw); plasticDissipation() sums the shear part with traceEnergy or O.trackEnergy; elasticEnergy() is

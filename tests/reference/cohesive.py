@@ -235,6 +235,25 @@ def facetContact():
     return rows
 
 
+def periodic():
+    """a bonded pair in a periodic cell, inside the cell and across its face (body 2 seen through the boundary)"""
+    out = []
+    for x0 in (4.0, 8.5):
+        O.reset()
+        O.periodic = True
+        O.cell.setBox(10, 10, 10)
+        m = mat(etaRoll=0.05)
+        O.bodies.append([sphere((x0, 5, 5), 1.0, material=m), sphere((x0 + 1.99, 5, 5), 1.0, material=m)])
+        engines(law=Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=True))
+        O.dt = 1e-4
+        O.step()
+        O.bodies[1].state.vel = (0.2, 0.5, -0.3)
+        O.bodies[1].state.angVel = (1, 2, 3)
+        O.run(50, True)
+        out.append([state(), vec(O.bodies[1].state.vel), vec(O.bodies[1].state.angVel)])
+    return out
+
+
 def energy():
     """O.energy's dissipation terms (O.trackEnergy), plasticDissipation() (traceEnergy or O.trackEnergy) and the elastic energies of
     a frictional contact with moments that slides, rolls and twists beyond its strengths"""
@@ -266,7 +285,7 @@ def energy():
 
 def everything():
     return {'constants': constants(), 'motions': motions(), 'cohesionNow': cohesionNow(), 'cantilever': cantilever(), 'distant': distant(),
-            'energy': energy(), 'facet': facetContact()}
+            'energy': energy(), 'facet': facetContact(), 'periodic': periodic()}
 
 
 if RUN:
