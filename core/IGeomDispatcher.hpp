@@ -44,8 +44,9 @@ template <class Derived, class S1, class S2, class G> class IGeomFunctorBatched 
 public:
     std::vector<std::string> argTypes() const override { return {registeredName<S1>(), registeredName<S2>()}; }
     std::string producedType() const override { return registeredName<G>(); }
+    // (not final: a subclass making another IGeom class, e.g. Ig2_Sphere_Sphere_ScGeom6D, replaces it)
     bool go(const Shape& s1, const Shape& s2, const State& st1, const State& st2, const Vector3r& shift2, bool force,
-            Interaction& I) final {
+            Interaction& I) override {
         Contact c(I);
         return self().Derived::go(static_cast<const S1&>(s1), static_cast<const S2&>(s2), st1.kinematics(), st2.kinematics(), shift2, force, c);
     }

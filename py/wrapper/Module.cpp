@@ -17,6 +17,7 @@
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <py/wrapper/ShopWrapper.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
+#include <py/wrapper/CohesiveWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/PolyhedraWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
@@ -54,6 +55,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindScGeom(m);
     yade::bindFrictVisco(m);
     yade::bindPolyhedra(m);
+    yade::bindCohesive(m);
     yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
