@@ -1,5 +1,6 @@
 #include <core/Omega.hpp>
-#include <pkg/dem/triaxial/TriaxialStressController.hpp>
+#include <py/wrapper/OmegaWrapper.hpp>
+#include <pkg/dem/triaxial/TriaxialCompressionEngine.hpp>
 #include <py/wrapper/Math.hpp>
 #include <py/wrapper/TriaxialWrapper.hpp>
 #include <pybind11/stl.h>
@@ -26,6 +27,9 @@ void bindTriaxial(py::module_&) {
             .def_property_readonly("max_vel1", [](const T& t) { return t.maxVel[0]; }, "Largest velocity of the walls along x: max_vel times width over the mean size [m/s]")
             .def_property_readonly("max_vel2", [](const T& t) { return t.maxVel[1]; }, "Largest velocity of the walls along y [m/s]")
             .def_property_readonly("max_vel3", [](const T& t) { return t.maxVel[2]; }, "Largest velocity of the walls along z [m/s]");
+    py::reinterpret_borrow<py::class_<TriaxialCompressionEngine>>(py::type::handle_of<TriaxialCompressionEngine>())
+            .def("setContactProperties", [](TriaxialCompressionEngine&, Real deg) { TriaxialCompressionEngine::setContactProperties(omega().scene(), deg); }, py::arg("frictionDegree"),
+                    "Assign a new friction angle (degrees) to the dynamic bodies' materials and to their contacts");
 }
 
 } // namespace yade

@@ -195,7 +195,7 @@ void TriaxialStressController::controlInternalStress() {
     growParticles(multiplier);
 }
 
-void TriaxialStressController::action() {
+void TriaxialStressController::measure() {
     Scene& s = *scene;
     checkAndInit();
     if (updatePorosity) {
@@ -205,7 +205,10 @@ void TriaxialStressController::action() {
     updateDimensions();
     if (s.iter % stiffnessUpdateInterval == 0 || s.iter == 0) updateStiffness();
     if (s.iter % computeStressStrainInterval == 0) computeStressStrain();
+}
 
+void TriaxialStressController::control() {
+    Scene& s = *scene;
     if (internalCompaction) {
         if (s.iter % radiusControlInterval == 0) controlInternalStress();
     } else {
@@ -219,6 +222,11 @@ void TriaxialStressController::action() {
     Real work = 0;
     for (int w = 0; w < 6; ++w) work += s.forces.getForce(wallId(w)).dot(s.bodies[wallId(w)]->state->vel());
     externalWork += work * s.dt;
+}
+
+void TriaxialStressController::action() {
+    measure();
+    control();
 }
 
 } // namespace yade

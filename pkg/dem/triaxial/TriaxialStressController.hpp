@@ -94,6 +94,9 @@ public:
 
 protected:
     bool initialized = false;
+    // A step is measure() (sizes, stiffnesses, stresses and strains when due) then control() (the walls or the radii).
+    void measure();
+    void control();
     // The walls' ids checked, normals, thickness, reference sizes and particlesVolume (first run).
     void checkAndInit();
     void updateDimensions();
