@@ -1,6 +1,7 @@
 #include <core/Omega.hpp>
 #include <py/wrapper/OmegaWrapper.hpp>
 #include <pkg/dem/triaxial/TriaxialCompressionEngine.hpp>
+#include <pkg/dem/triaxial/TriaxialTest.hpp>
 #include <py/wrapper/Math.hpp>
 #include <py/wrapper/TriaxialWrapper.hpp>
 #include <pybind11/stl.h>
@@ -30,6 +31,10 @@ void bindTriaxial(py::module_&) {
     py::reinterpret_borrow<py::class_<TriaxialCompressionEngine>>(py::type::handle_of<TriaxialCompressionEngine>())
             .def("setContactProperties", [](TriaxialCompressionEngine&, Real deg) { TriaxialCompressionEngine::setContactProperties(omega().scene(), deg); }, py::arg("frictionDegree"),
                     "Assign a new friction angle (degrees) to the dynamic bodies' materials and to their contacts");
+    // (the scene is built in Python, from the generator's attributes: py/yade/_triaxial.py)
+    py::reinterpret_borrow<py::class_<TriaxialTest>>(py::type::handle_of<TriaxialTest>())
+            .def("load", [](py::object self) { py::module_::import("yade._triaxial").attr("load")(self); },
+                    "Build the triaxial test described by the attributes into O (replacing the current scene)");
 }
 
 } // namespace yade
