@@ -34,7 +34,9 @@ void bindTriaxial(py::module_&) {
     // (the scene is built in Python, from the generator's attributes: py/yade/_triaxial.py)
     py::reinterpret_borrow<py::class_<TriaxialTest>>(py::type::handle_of<TriaxialTest>())
             .def("load", [](py::object self) { py::module_::import("yade._triaxial").attr("load")(self); },
-                    "Build the triaxial test described by the attributes into O (replacing the current scene)");
+                    "Build the triaxial test described by the attributes into O (replacing the current scene)")
+            .def("generate", [](py::object self, const std::string& fileName) { py::module_::import("yade._triaxial").attr("generate")(self, fileName); },
+                    py::arg("fileName"), "Build the scene as load() does (it becomes O's scene) and save it to fileName");
 }
 
 } // namespace yade

@@ -71,3 +71,9 @@ def load(g):
     engines.append(NewtonIntegrator(damping=g.dampingForce))
     O.engines = engines
     O.dt = dt
+
+
+def generate(g, fileName):
+    """Build the scene (as load does: it becomes O's scene) and save it to fileName (O.save)"""
+    load(g)
+    O.save(fileName)
