@@ -234,3 +234,38 @@ def test_compression_engine_moves_on_when_stable():
     c = e.currentStrainRate
     O.step()
     assert e.currentStrainRate == pytest.approx(c + 3e-4 * (0.5 - c), rel=1e-12)
+
+
+CHECK = '/usr/lib/x86_64-linux-gnu/yade-double/py/yade/tests/checks/checkTestTriax.py'
+
+
+@pytest.mark.skipif(not os.path.exists(CHECK), reason='the reference Yade (its checks) is not installed')
+def test_reference_check_script_runs_unchanged(tmp_path, monkeypatch):
+    """the reference's checkTestTriax.py, run as its harness does (checksPath, YadeCheckError defined)"""
+    monkeypatch.chdir(tmp_path)
+
+    class YadeCheckError(Exception):
+        pass
+
+    import yade
+    ns = dict(vars(yade))
+    ns.update(__name__='__main__', checksPath=os.path.dirname(CHECK), YadeCheckError=YadeCheckError)
+    with open(CHECK) as f:
+        code = compile(f.read(), CHECK, 'exec')
+    exec(code, ns)  # (raises YadeCheckError if the peak stress or the porosity differ by more than its tolerance)
+    e = [x for x in O.engines if isinstance(x, TriaxialCompressionEngine)][0]
+    assert e.currentState == 3
+
+
+def test_set_contact_properties_leaves_the_wall_contacts():
+    scenes.build(n=4)
+    O.run(600, True)
+    e = TriaxialCompressionEngine()
+    e.setContactProperties(25)
+    tans = [(i.id1 < 6 or i.id2 < 6, i.phys.tangensOfFrictionAngle) for i in O.interactions if i.isReal]
+    assert any(w for w, _ in tans) and any(not w for w, _ in tans)
+    for wall, t in tans:
+        assert t == pytest.approx(0 if wall else math.tan(math.radians(25)), abs=1e-15)
+    assert O.bodies[10].material.frictionAngle == pytest.approx(math.radians(25))
+    with pytest.raises(ValueError):
+        e.setContactProperties(-1)

@@ -30,7 +30,7 @@ void bindTriaxial(py::module_&) {
             .def_property_readonly("max_vel3", [](const T& t) { return t.maxVel[2]; }, "Largest velocity of the walls along z [m/s]");
     py::reinterpret_borrow<py::class_<TriaxialCompressionEngine>>(py::type::handle_of<TriaxialCompressionEngine>())
             .def("setContactProperties", [](TriaxialCompressionEngine&, Real deg) { TriaxialCompressionEngine::setContactProperties(omega().scene(), deg); }, py::arg("frictionDegree"),
-                    "Assign a new friction angle (degrees) to the dynamic bodies' materials and to their contacts");
+                    "Assign a new friction angle (degrees) to the dynamic bodies' materials and to the contacts between two dynamic bodies");
     // (the scene is built in Python, from the generator's attributes: py/yade/_triaxial.py)
     py::reinterpret_borrow<py::class_<TriaxialTest>>(py::type::handle_of<TriaxialTest>())
             .def("load", [](py::object self) { py::module_::import("yade._triaxial").attr("load")(self); },

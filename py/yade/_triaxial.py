@@ -24,6 +24,9 @@ def _packing(g, lo, hi):
     sp = SpherePack()
     if g.importFilename:
         sp.load(g.importFilename)
+        # the box becomes the imported spheres' bounding box (as the reference writes it back)
+        g.lowerCorner = Vector3([min(c[i] - r for c, r in sp) for i in range(3)])
+        g.upperCorner = Vector3([max(c[i] + r for c, r in sp) for i in range(3)])
         return sp
     if g.radiusMean > 0:
         sp.makeCloud(lo, hi, rMean=g.radiusMean, rRelFuzz=g.radiusStdDev, num=g.numberOfGrains, seed=g.seed)
@@ -48,12 +51,14 @@ def load(g):
     """Replace the scene of O by the triaxial test that the TriaxialTest g describes"""
     lo, hi = _check(g)
     sp = _packing(g, lo, hi)
+    lo, hi = Vector3(g.lowerCorner), Vector3(g.upperCorner)
     O.reset()
     wallMat = FrictMat(young=g.boxYoungModulus, poisson=g.boxKsDivKn, frictionAngle=math.radians(g.boxFrictionDeg))
     sphereMat = FrictMat(young=g.sphereYoungModulus, poisson=g.sphereKsDivKn, frictionAngle=math.radians(g.compactionFrictionDeg), density=g.density)
     O.bodies.append(_walls(g, lo, hi, wallMat))
     sp.toSimulation(material=sphereMat)
     dt = g.defaultDt if g.defaultDt > 0 else PWaveTimeStep()
+    g.defaultDt = dt  # (written back, as the reference)
     triax = TriaxialCompressionEngine(
         wall_bottom_id=0, wall_top_id=1, wall_left_id=2, wall_right_id=3, wall_back_id=4, wall_front_id=5,
         sigmaIsoCompaction=g.sigmaIsoCompaction, sigmaLateralConfinement=g.sigmaLateralConfinement, strainRate=g.strainRate,

@@ -22,8 +22,10 @@ void TriaxialCompressionEngine::setContactProperties(Scene& s, Real frictionDegr
     for (const auto& b : s.bodies)
         if (b && b->isDynamic())
             if (auto* m = dynamic_cast<FrictMat*>(b->material.get())) m->frictionAngle = angle;
+    // the contacts between two dynamic bodies (those with a wall keep theirs, as in the reference)
+    auto dynamic = [&](Body::id_t id) { return s.bodies.exists(id) && s.bodies[id]->isDynamic(); };
     for (size_t k = 0; k < s.interactions.size(); ++k) {
-        if (!s.interactions.isReal(k)) continue;
+        if (!s.interactions.isReal(k) || !dynamic(s.interactions.pairIds[2 * k]) || !dynamic(s.interactions.pairIds[2 * k + 1])) continue;
         if (auto* p = dynamic_cast<FrictPhys*>(s.interactions.phys(k))) p->tangensOfFrictionAngle = std::tan(angle);
     }
 }
