@@ -269,3 +269,10 @@ def test_set_contact_properties_leaves_the_wall_contacts():
     assert O.bodies[10].material.frictionAngle == pytest.approx(math.radians(25))
     with pytest.raises(ValueError):
         e.setContactProperties(-1)
+
+
+def test_walls_in_the_wrong_order_are_refused():
+    t = scenes.build(n=2)
+    t.wall_left_id, t.wall_right_id = 1, 0  # (right of left: a box of negative width)
+    with pytest.raises(RuntimeError, match='wall_'):
+        O.step()

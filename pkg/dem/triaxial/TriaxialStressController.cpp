@@ -88,6 +88,9 @@ void TriaxialStressController::updateDimensions() {
     width = coord(right) - coord(left) - thickness;
     height = coord(top) - coord(bottom) - thickness;
     depth = coord(front) - coord(back) - thickness;
+    if (!(width > 0 && height > 0 && depth > 0) || !std::isfinite(width * height * depth))
+        throw std::runtime_error(getClassName() + ": the box between the walls has size " + std::to_string(width) + " x " + std::to_string(height) + " x "
+                + std::to_string(depth) + " (each wall_*_id must name the wall on its side: left/right along x, bottom/top along y, back/front along z, and thickness must be below the gaps)");
     boxVolume = width * height * depth;
     porosity = 1 - particlesVolume / boxVolume;
     const Real mean = (width + height + depth) / 3;
