@@ -154,7 +154,7 @@ def registered_classes():
 
 # Abstract roots that no attribute or container of a scene can hold: Serializable itself, and
 # Functor (every dispatcher holds a list of one of its four subclasses).
-UNPLACEABLE = {'Serializable', 'Functor'}
+UNPLACEABLE = {'Serializable', 'Functor', 'FileGenerator', 'TriaxialTest'}  # (generators build a scene; no scene holds them)
 
 
 class Filler:

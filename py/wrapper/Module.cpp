@@ -21,6 +21,7 @@
 #include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/PolyhedraWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
+#include <py/wrapper/TriaxialWrapper.hpp>
 #include <lib/vtk/VTKWriter.hpp>
 #include <py/wrapper/CellWrapper.hpp>
 #include <py/wrapper/ScGeomWrapper.hpp>
@@ -56,6 +57,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindFrictVisco(m);
     yade::bindPolyhedra(m);
     yade::bindCohesive(m);
+    yade::bindTriaxial(m);
     yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
