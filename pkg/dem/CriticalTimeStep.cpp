@@ -64,6 +64,18 @@ namespace {
     }
 } // namespace
 
+// Whether these stiffness diagonals give body id a critical step below dt (dt2 = dt²), without the square roots of
+// lowest(): dt > sqrt(2)·sqrt(m/K) is K·dt² > 2m.
+static bool overStep(const BodyStore& h, Body::id_t id, const Vector3r& kt, const Vector3r& kr, Real dt2) {
+    const int blocked = h.blockedDOFsMask[(size_t)id];
+    for (int i = 0; i < 6; ++i) {
+        const Real K = i < 3 ? kt[i] : kr[i - 3];
+        const Real m = i < 3 ? h.mass[(size_t)id] : h.inertia[(size_t)id][i - 3];
+        if (K > 0 && !(blocked & (1 << i)) && K * dt2 > 2 * m) return true;
+    }
+    return false;
+}
+
 void criticalStepOfBody(const Scene& scene, Body::id_t id, CriticalStep& best, bool asLastLoopSawThem) {
     const BodyStore& h = scene.bodies.hot();
     if (!isDynamic(h, id)) return; // (lowest() would find nothing, and a facet's many partners are not read)
@@ -80,6 +92,7 @@ CriticalStep criticalStepOfNewContacts(const Scene& scene, const std::vector<siz
     if (kRot.size() < h.size()) kRot.resize(h.size(), Vector3r::Zero());
     CriticalStep best;
     Vector3r ct, cr;
+    const Real dt2 = scene.dt * scene.dt;
     for (size_t k : contacts) {
         if (k >= intrs.size() || !intrs.isReal(k)) continue;
         for (int side = 1; side <= 2; ++side) {
@@ -87,9 +100,7 @@ CriticalStep criticalStepOfNewContacts(const Scene& scene, const std::vector<siz
             if (!isDynamic(h, id) || !contribution(intrs.geom(k), intrs.phys(k), side, ct, cr)) continue;
             kTrans[id] += ct;
             kRot[id] += cr;
-            CriticalStep estimate;
-            lowest(h, id, kTrans[id], kRot[id], estimate);
-            if (!(scene.dt > estimate.dt)) continue;
+            if (!overStep(h, id, kTrans[id], kRot[id], dt2)) continue;
             sumsOfBody(scene, id, true, kTrans[id], kRot[id]); // (the sums may hold contacts that ended: all its contacts now)
             lowest(h, id, kTrans[id], kRot[id], best);
         }
