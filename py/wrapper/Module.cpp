@@ -18,6 +18,7 @@
 #include <py/wrapper/ShopWrapper.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
+#include <py/wrapper/CpmWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
 #include <lib/vtk/VTKWriter.hpp>
 #include <py/wrapper/CellWrapper.hpp>
@@ -52,6 +53,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindCell(m);
     yade::bindScGeom(m);
     yade::bindFrictVisco(m);
+    yade::bindCpm(m);
     yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.
