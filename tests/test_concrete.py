@@ -158,12 +158,12 @@ def test_uniaxial_curve_agrees_with_reference(test, rate, steps, every):
             assert s1 == pytest.approx(s2, rel=.02, abs=.002 * abs(sr))
 
 
-def chain(n=10, strainRate=.2, steps=600, r=1e-3, E=30e9):
+def chain(n=10, strainRate=1., steps=3000, r=1e-3, E=30e9):
     """a column of n spheres touching, pulled at its ends: (strain, avgStress, max omega, max kappaD) every 10 steps"""
     O.materials.append(CpmMat(young=E, poisson=.2, sigmaT=3e6, frictionAngle=.5, epsCrackOnset=1e-4, relDuctility=5, density=4800))
     ids = [O.bodies.append(sphere((0, 0, 2 * r * k), r)) for k in range(n)]
-    strainer = UniaxialStrainer(strainRate=strainRate, axis=2, posIds=[ids[-1]], negIds=[ids[0]], crossSectionArea=math.pi * r * r)
-    scenes.engines([strainer], intRadius=1., damping=.8)
+    strainer = UniaxialStrainer(strainRate=strainRate, axis=2, posIds=[ids[-1]], negIds=[ids[0]], crossSectionArea=math.pi * r * r, setSpeeds=True)
+    scenes.engines([strainer], intRadius=1.5, damping=.8)  # (the neighbours only: the next ones are 4r apart)
     O.dt = .5 * r / math.sqrt(E / 4800)
     rows = []
     for k in range(steps // 10):

@@ -97,7 +97,7 @@ def pair(mat1, mat2, x2, r1=1e-3, r2=1.2e-3, velocity=(0, 0, 0), steps=30, ip2=N
     m1 = O.materials.append(mat1)
     m2 = O.materials.append(mat2) if mat2 is not None else m1
     O.bodies.append([sphere((0, 0, 0), r1, material=m1, fixed=True), sphere(x2, r2, material=m2)])
-    O.bodies[1].state.blockedDOFs = 'xyzXYZ'
+    O.bodies[1].state.blockedDOFs = 'xyz'  # (dynamic: the reference's collider pairs two bodies that are not, this engine's does not)
     engines(intRadius=1.5, damping=0, ip2=ip2, law=law)
     O.dt = 1e-7
     O.step()
@@ -137,7 +137,7 @@ def facet_contact():
     O.reset()
     m = O.materials.append(concrete())
     O.bodies.append([facet([(-3e-3, -3e-3, 0), (3e-3, -3e-3, 0), (0, 3e-3, 0)], material=m), sphere((0, 0, 0.95e-3), 1e-3, material=m)])
-    O.bodies[1].state.blockedDOFs = 'xyzXYZ'
+    O.bodies[1].state.blockedDOFs = 'xyz'
     engines(intRadius=1., damping=0)
     O.dt = 1e-7
     O.step()
@@ -170,10 +170,11 @@ def strainer_runs():
     """UniaxialStrainer's kinematics on three free spheres (no contacts): variants of its attributes"""
     out = {}
     for name, kw in [('symmetric', dict(strainRate=.1)), ('absSpeed', dict(absSpeed=.2)), ('asym1', dict(strainRate=-.1, asymmetry=1, blockDisplacements=True)),
-                     ('asym-1', dict(strainRate=.1, asymmetry=-1, blockRotations=True))]:
+                     ('asym-1', dict(strainRate=.1, asymmetry=-1, blockRotations=True)), ('setSpeeds', dict(strainRate=.1, setSpeeds=True)),
+                     ('setSpeedsAsym', dict(strainRate=-.2, setSpeeds=True, asymmetry=1))]:
         O.reset()
         O.materials.append(concrete())
-        O.bodies.append([sphere((0, 0, 0), 1), sphere((0, 0, 3.8), 1), sphere((5, 0, 3.8), 1)])
+        O.bodies.append([sphere((0, 0, 0), 1), sphere((0, 0, 3.8), 1), sphere((5, 0, 3.8), 1), sphere((9, 1, 1.3), 1), sphere((-9, 1, 5.), 1)])
         st = UniaxialStrainer(axis=2, posIds=[1, 2], negIds=[0], crossSectionArea=2., **kw)
         O.engines = [ForceResetter(), st, NewtonIntegrator(damping=0)]
         O.dt = 1e-3

@@ -20,15 +20,15 @@ void UniaxialStrainer::init() {
         for (int id : *ids)
             if (!scene->bodies.exists(id)) fail("body #" + std::to_string(id) + " of posIds/negIds does not exist");
     if (!(crossSectionArea > 0 && std::isfinite(crossSectionArea))) fail("crossSectionArea must be given (positive), got " + std::to_string(crossSectionArea));
-    originalLength = length();
-    if (!(originalLength > 0))
+    const Real L = length();
+    if (!(L > 0))
         fail("body #" + std::to_string(posIds[0]) + " (posIds[0]) must be further along the axis than #" + std::to_string(negIds[0]) + " (negIds[0])");
     if (std::isnan(strainRate)) {
         if (!std::isfinite(absSpeed)) fail("strainRate or absSpeed must be given");
-        strainRate = absSpeed / originalLength;
+        strainRate = absSpeed / L;
     } else {
         if (!std::isfinite(strainRate)) fail("strainRate must be finite");
-        absSpeed = strainRate * originalLength;
+        absSpeed = strainRate * L;
     }
     int mask = blockDisplacements ? State::DOF_X | State::DOF_Y | State::DOF_Z : 1 << axis;
     if (blockRotations) mask |= State::DOF_RX | State::DOF_RY | State::DOF_RZ;
@@ -36,7 +36,12 @@ void UniaxialStrainer::init() {
     for (const auto* ids : {&posIds, &negIds})
         for (int id : *ids) c.blockedDOFsMask[id] = mask | (c.blockedDOFsMask[id] & State::clumpedBit);
     currentStrainRate = strainRate;
-    initialized = true;
+    originalLength = L;
+    if (setSpeeds) { // every body gets the velocity of the uniform strain field, the ends' included
+        const Real x0 = c.pos[negIds[0]][axis], vNeg = asymmetry == 0 ? -absSpeed / 2 : asymmetry > 0 ? 0 : -absSpeed;
+        for (size_t id = 0; id < scene->bodies.size(); ++id)
+            if (scene->bodies.exists((Body::id_t)id)) c.vel[id][axis] = vNeg + strainRate * (c.pos[id][axis] - x0);
+    }
 }
 
 void UniaxialStrainer::moveEnds(Real speed) {
@@ -48,7 +53,7 @@ void UniaxialStrainer::moveEnds(Real speed) {
 }
 
 void UniaxialStrainer::action() {
-    if (!initialized) init();
+    if (std::isnan(originalLength)) init(); // (a loaded scene keeps its originalLength: no second start)
     const Real dt = scene->dt;
     const Real current = length();
     strain = current / originalLength - 1;
