@@ -21,8 +21,9 @@ public:
         State::visit(v);
         v.attr("normDmg", normDmg, "Average damage of the body's contacts, the broken ones (deleted) included: 1 - mean relative residual "
                                    "strength (CpmStateUpdater) [-]");
-        v.attr("numBrokenCohesive", numBrokenCohesive, "Number of the body's contacts that broke: removed in tension once their damage "
-                                                       "reached Law2_ScGeom_CpmPhys_Cpm.omegaThreshold (those that were not cohesive included, as in the reference)");
+        v.attr("numBrokenCohesive", numBrokenCohesive, "Number of the body's contacts that broke: removed in tension, a cohesive one once "
+                                                       "its damage passed Law2_ScGeom_CpmPhys_Cpm.omegaThreshold, one that was not cohesive at "
+                                                       "once (counted too, as in the reference)");
         v.attr("numContacts", numContacts, "Number of the body's contacts (CpmStateUpdater)");
         v.attr("epsVolumetric", epsVolumetric, "Volumetric strain around the body (not computed, as in the reference) [-]");
         v.attr("stress", stress, "Stress tensor of the body (CpmStateUpdater): Σ over its contacts of (-Fn·n + Fs) ⊗ (c - x) over the "

@@ -56,7 +56,7 @@ bool Law2_ScGeom_CpmPhys_Cpm::go(ScGeom& geom, CpmPhys& phys, const Contact& c) 
     phys.relResidualStrength = !phys.isCohesive ? 0 : phys.kappaD < phys.epsCrackOnset ? 1 : (1 - phys.omega) * phys.kappaD / phys.epsCrackOnset;
     phys.sigmaN -= phys.isoPrestress;
 
-    if (phys.epsN > 0 && phys.omega >= omegaThreshold) { // broken in tension (a contact that is not cohesive: at once), counted
+    if (phys.epsN > 0 && (!phys.isCohesive || phys.omega > omegaThreshold)) { // broken in tension (not cohesive: at once), counted
         countBroken(c.id1);
         countBroken(c.id2);
         return false;

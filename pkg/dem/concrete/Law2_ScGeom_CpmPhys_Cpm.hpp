@@ -19,17 +19,16 @@ public:
             "plane plus the shear increment over refLength; kappaD = max(kappaD, epsN, 0); omega = funcG(kappaD) (1 if not cohesive); "
             "sigmaN = (1 - omega if epsN > 0 else 1)·E·epsN - isoPrestress; sigmaT = G·epsT capped at max(0, undamagedCohesion·"
             "(1 - omega) - sigmaN·tanFrictionAngle) (epsT is not reduced); Fn = sigmaN·crossSection, Fs = sigmaT·crossSection, "
-            "normalForce = -Fn·n, shearForce = -Fs, applied at the contact point. A contact in tension (epsN > 0) whose omega reached "
-            "omegaThreshold is removed and counted in its bodies' CpmState.numBrokenCohesive: one that is not cohesive (omega 1) as "
-            "soon as it is stretched, the reference's rule (found by running it; it counts those too). yieldSurfType, yieldLogSpeed, yieldEllipseShift, epsSoft and relKnSoft belong to the full model, which "
+            "normalForce = -Fn·n, shearForce = -Fs, applied at the contact point. A contact in tension (epsN > 0) whose omega passed "
+            "omegaThreshold is removed and counted in its bodies' CpmState.numBrokenCohesive, and so is one that is not cohesive as "
+            "soon as it is stretched (the reference's rule, found by running it: it counts those too). yieldSurfType, yieldLogSpeed, yieldEllipseShift, epsSoft and relKnSoft belong to the full model, which "
             "the reference's build lacks: they are stored and not used.";
     int yieldSurfType = 2;
     Real yieldLogSpeed = 0.1, yieldEllipseShift = NaN, omegaThreshold = 1, epsSoft = 1, relKnSoft = 0.3;
     template <class V> void visit(V& v) {
         LawFunctor::visit(v);
-        v.attr("omegaThreshold", omegaThreshold, "Damage from which a contact in tension is removed; a cohesive contact's omega "
-                                                 "reaches 1 only at infinite strain, so 1 (the default) removes only contacts that are "
-                                                 "not cohesive (omega 1)");
+        v.attr("omegaThreshold", omegaThreshold, "Damage above which a cohesive contact in tension is removed (omega reaches 1 only at "
+                                                 "infinite strain: >= 1 never removes one)");
         v.attr("yieldSurfType", yieldSurfType, "Yield function of the full model (0 Mohr-Coulomb, 1 parabolic, 2 logarithmic, 3 log + "
                                                "linear in tension, 4 elliptic, 5 elliptic + log); not used: the public model is "
                                                "Mohr-Coulomb, as in the reference's build");
