@@ -135,6 +135,10 @@ def test_state_updater_equals_reference():
     assert_close(scenes.updater_states(), REFERENCE['updater'], rel=1e-7, abs_=1e-6)
 
 
+def test_state_updater_counts_the_broken_contacts_as_the_reference():
+    assert_close(scenes.updater_broken(), REFERENCE['updaterBroken'], rel=1e-12, abs_=1e-15)
+
+
 def test_uniaxial_strainer_kinematics_equal_reference():
     assert_close(scenes.strainer_runs(), REFERENCE['strainer'], rel=1e-12, abs_=1e-15)
 
@@ -223,7 +227,8 @@ def test_bad_parameters_are_refused():
         UniaxialStrainer(stressUpdateInterval=0)
 
 
-def test_save_and_load_keep_the_damage_and_resume_exactly(tmp_path):
+@pytest.mark.parametrize('name', ['cpm.yade', 'cpm.xml'])
+def test_save_and_load_keep_the_damage_and_resume_exactly(tmp_path, name):
     def run(steps):
         O.reset()
         neg, pos = scenes.specimen()
@@ -232,7 +237,7 @@ def test_save_and_load_keep_the_damage_and_resume_exactly(tmp_path):
         O.dt = 3e-7
         O.run(steps, True)
     run(300)  # damaged: past the peak
-    path = str(tmp_path / 'cpm.yade')
+    path = str(tmp_path / name)
     O.save(path)
     O.run(50, True)
     after = [(tuple(b.state.pos), b.state.normDmg) for b in O.bodies], [(i.id1, i.id2, i.phys.omega, tuple(i.phys.epsT)) for i in O.interactions if i.isReal]

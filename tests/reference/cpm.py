@@ -166,6 +166,25 @@ def updater_states():
                         for b in O.bodies])
 
 
+def updater_broken():
+    """CpmStateUpdater while contacts break (omegaThreshold .7) and come back not cohesive: normDmg, numBrokenCohesive,
+    avgRelResidual"""
+    O.reset()
+    O.materials.append(concrete(relDuctility=3))
+    O.bodies.append([sphere((0, 0, 0), 1e-3, fixed=True), sphere((0, 0, 2.2e-3), 1.2e-3), sphere((0, 2.0e-3, 0), 1e-3)])
+    O.bodies[1].state.blockedDOFs = O.bodies[2].state.blockedDOFs = 'xyz'
+    up = CpmStateUpdater(iterPeriod=1)
+    engines([up], intRadius=1.5, damping=0, law=Law2_ScGeom_CpmPhys_Cpm(omegaThreshold=.7))
+    O.dt = 1e-7
+    O.step()
+    O.bodies[1].state.vel, O.bodies[2].state.vel = (0, 0, 1.), (0, .02, 0)
+    out = []
+    for k in range(8):
+        O.run(5, True)
+        out.append([O.iter, up.avgRelResidual] + [x for b in O.bodies for x in (b.state.numBrokenCohesive, b.state.normDmg)])
+    return out
+
+
 def strainer_runs():
     """UniaxialStrainer's kinematics on three free spheres (no contacts): variants of its attributes"""
     out = {}
@@ -189,7 +208,7 @@ def strainer_runs():
 
 def all_scenes():
     return dict(tension=uniaxial(1., 2000), compression=uniaxial(-5., 4000, every=20), pairs=pairs(), facet=facet_contact(),
-                updater=updater_states(), strainer=strainer_runs())
+                updater=updater_states(), updaterBroken=updater_broken(), strainer=strainer_runs())
 
 
 if RUN:

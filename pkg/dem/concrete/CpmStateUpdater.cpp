@@ -58,7 +58,12 @@ void CpmStateUpdater::action() {
         const Real volume = sphere ? 4. / 3. * Mathr_PI * std::pow(sphere->radius, 3) / 0.62 : NaN; // (packing fraction 0.62)
         state->stress = sphere ? Matrix3r(s.stress / volume) : Matrix3r::Zero();
     }
-    avgRelResidual = cohesive > 0 ? residual / cohesive : NaN;
+    long broken2 = 0; // the broken contacts, counted on both their bodies
+    for (size_t id = 0; id < bodies.size(); ++id)
+        if (bodies.exists((Body::id_t)id))
+            if (const auto* state = dynamic_cast<const CpmState*>(bodies[(Body::id_t)id]->state.get())) broken2 += state->numBrokenCohesive;
+    const Real all = cohesive + broken2 / 2.; // (a broken contact counts with residual strength 0, as in the reference)
+    avgRelResidual = all > 0 ? residual / all : NaN;
     maxOmega = omegaMax;
 }
 
