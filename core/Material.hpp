@@ -1,6 +1,8 @@
 // Mechanical properties shared by bodies (1.2.1); held in O.materials.
 #pragma once
+#include <core/State.hpp>
 #include <lib/factory/ClassRegistry.hpp>
+#include <memory>
 
 namespace yade {
 
@@ -16,6 +18,9 @@ public:
         v.attr("label", label, "Textual name; O.materials['label'] finds it");
         v.attr("density", density, "Density [kg/m³] (0: massless bodies, e.g. fixed walls, as in Yade)", Attr::nonNegative);
     }
+    // A new State for a body of this material (a material whose bodies need more state returns its subclass;
+    // utils.sphere etc. call it).
+    virtual std::shared_ptr<State> newAssocState() const { return std::make_shared<State>(); }
     YADE_INDEXABLE_ROOT(Material)
 };
 

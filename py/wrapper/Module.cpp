@@ -20,6 +20,7 @@
 #include <py/wrapper/CohesiveWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
 #include <py/wrapper/PolyhedraWrapper.hpp>
+#include <py/wrapper/CpmWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
 #include <py/wrapper/TriaxialWrapper.hpp>
 #include <lib/vtk/VTKWriter.hpp>
@@ -58,6 +59,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindPolyhedra(m);
     yade::bindCohesive(m);
     yade::bindTriaxial(m);
+    yade::bindCpm(m);
     yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
     // exception propagates as error_already_set and is re-raised by O.wait() with its traceback.

@@ -85,6 +85,7 @@ def _commonBodySetup(b, shape, center, material, fixed, mask, volume=None, inert
     """Shape, material, position, mass and inertia (inertia: per unit mass), dynamic flag, mask, bound."""
     b.shape = shape
     b.material = _resolveMaterial(material)
+    b.state = b.material.newAssocState()  # (the material's State class: CpmMat's bodies get a CpmState)
     b.state.pos = b.state.refPos = center
     if volume is not None:
         b.state.mass = volume * b.material.density
