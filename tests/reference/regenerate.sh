@@ -21,3 +21,9 @@ yade -n -x -j1 clump.py 2>/dev/null | grep '^CLUMP ' | sed 's/^CLUMP //' > data/
 yade -n -x -j1 clump_packing.py 2>/dev/null | grep '^CLUMPPACK ' | sed 's/^CLUMPPACK //' > data/clump_packing.json
 # aspherical rotation, Fincham's scheme (tests/test_aspherical_rotation.py): one JSON line
 yade -n -x -j1 aspherical.py 2>/dev/null | grep '^ASPHERICAL ' | sed 's/^ASPHERICAL //' > data/aspherical.json
+# the families of issue 40, each one JSON line (the tests named in each script's header compare)
+yade -n -x -j1 localframe.py 2>/dev/null | grep '^LOCALFRAME ' | sed 's/^LOCALFRAME //' > data/localframe.json
+yade -n -x -j1 polyhedra.py 2>/dev/null | grep '^{' > data/polyhedra.json
+yade -n -x -j1 cohesive.py 2>/dev/null | grep '^COHESIVE ' | cut -c10- > data/cohesive.json
+yade -n -x -j1 triaxial.py 2>/dev/null | grep '^TRIAXIAL' > data/triaxial.json
+yade -n -x -j1 cpm.py 2>/dev/null | grep '^CPM ' | sed 's/^CPM //' > data/cpm.json
