@@ -63,10 +63,12 @@ void InteractionLoop::prepareShapes() {
     cache.radius.assign(n, NaN);
     cache.shape.assign(n, nullptr);
     cache.shapeIndex.assign(n, -1);
+    cache.material.assign(n, nullptr);
     cache.facetIds.clear();
     const int sphereIndex = Sphere::classIndexStatic(), facetIndex = Facet::classIndexStatic();
     for (long id = 0; id < n; ++id) {
         const Body* b = bodies[(Body::id_t)id].get();
+        if (b) cache.material[id] = b->material;
         if (!b || !b->shape) continue;
         const int c = b->shape->getClassIndex();
         cache.shape[id] = b->shape.get();
@@ -544,7 +546,6 @@ void InteractionLoop::computeGeometry(Scratch& sc, size_t n, const BodyColumns& 
 bool InteractionLoop::makeNewContact(Scratch& sc, Contact& c, long k, std::string& error) {
     Scene& s = *scene;
     InteractionContainer& intrs = s.interactions;
-    const BodyContainer& bodies = s.bodies;
         std::shared_ptr<IGeom> geom = std::move(*c.made);
         if (!geom)
             if (const InteractionContainer::Record* rec = intrs.record((size_t)k)) geom = rec->geom;
@@ -553,15 +554,16 @@ bool InteractionLoop::makeNewContact(Scratch& sc, Contact& c, long k, std::strin
             error = "an Ig2 functor found bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + " in contact but made no geometry";
             return false;
         }
-        const Body& b1 = *bodies[c.id1];
-        const Body& b2 = *bodies[c.id2];
-        const auto* physEntry = b1.material && b2.material ? &physDispatcher->getFunctor(*b1.material, *b2.material) : nullptr;
+        // (the materials from the shape cache, refreshed when bodies or anything from Python changed: no visit to the Bodies)
+        const std::shared_ptr<Material>& m1 = shapeCache.material[(size_t)c.id1];
+        const std::shared_ptr<Material>& m2 = shapeCache.material[(size_t)c.id2];
+        const auto* physEntry = m1 && m2 ? &physDispatcher->getFunctor(*m1, *m2) : nullptr;
         if (!physEntry || !physEntry->functor) {
             const InteractionContainer::Record* rec = intrs.record((size_t)k);
             if (!rec || rec->geom != geom) intrs.keepGeom((size_t)k, geom); // (for the next step)
             if (physEntry) {
 #pragma omp critical(yadeError)
-                error = "no Ip2 functor for " + b1.material->getClassName() + "+" + b2.material->getClassName()
+                error = "no Ip2 functor for " + m1->getClassName() + "+" + m2->getClassName()
                         + " (bodies #" + std::to_string(c.id1) + " and #" + std::to_string(c.id2) + ")";
             }
             return false;
@@ -575,7 +577,7 @@ bool InteractionLoop::makeNewContact(Scratch& sc, Contact& c, long k, std::strin
         I.phys.reset();
         bool failed = false;
         try {
-            physEntry->functor->go(b1.material, b2.material, I);
+            physEntry->functor->go(m1, m2, I);
         } catch (const std::exception& e) { // (not out of the parallel region: reported after it)
             I.phys.reset();
             failed = true;

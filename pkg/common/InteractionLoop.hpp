@@ -87,6 +87,8 @@ private:
         std::vector<Body::id_t> facetIds;
         std::vector<const Shape*> shape;
         std::vector<int> shapeIndex;
+        // each body's material (a new contact's Ip2 functor takes them: read here, not through the Body)
+        std::vector<std::shared_ptr<Material>> material;
         long long changes = -1, writes = -1, scene = -1; // bodies.changes, externalWrites(), Scene::serial
     } shapeCache;
     std::vector<FacetPlane> facetPlanes;
