@@ -15,7 +15,9 @@ from . import utils
 
 # the compression: stiff frictionless spheres pushed to a high stress, then unloaded to a low one
 # (overlaps of about 1e-4 of the radius at the end); porosity and sphere counts as the reference's
-_YOUNG, _FRICTION, _STRESSES, _MAX_STEPS = 30e9, 0., [-1e8, -1e6], 200000
+_YOUNG, _STRESSES, _MAX_STEPS = 30e9, [-1e8, -1e6], 200000
+_FRICTION_PERI, _FRICTION_DENSE = 0., .5
+_DENSE_FILL = .56  # (about what the compression reaches with _FRICTION_DENSE)
 _LOOSE_POROSITY = .85  # of the initial cloud of randomDensePack's spheresInCell spheres
 
 
@@ -39,17 +41,17 @@ def _fuzz(who, rRelFuzz):
     return rRelFuzz
 
 
-def _compress(cloud, radius):
+def _compress(cloud, radius, friction):
     """The periodic cloud compressed in the secondary scene; returns the dense periodic SpherePack.
     The current scene is not touched (O.switchScene there and back, the secondary scene reset)."""
     O.switchScene()  # (raises, with the reference's words, while the simulation runs)
     try:
         O.resetThisScene()
-        mat = O.materials.append(FrictMat(young=_YOUNG, poisson=.5, frictionAngle=_FRICTION, density=2400))
+        mat = O.materials.append(FrictMat(young=_YOUNG, poisson=.5, frictionAngle=friction, density=2400))
         cloud.toSimulation(material=mat)  # (sets the periodic cell)
         O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()], verletDist=.05 * radius),
                      InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
-                     PeriIsoCompressor(charLen=2 * radius, stresses=_STRESSES, maxUnbalanced=1e-2, doneHook='O.pause()', globalUpdateInt=5,
+                     PeriIsoCompressor(charLen=2 * radius, stresses=_STRESSES, maxUnbalanced=1e-2, doneHook='import yade; yade.O.pause()', globalUpdateInt=5,
                                        keepProportions=True), NewtonIntegrator(damping=.6)]
         O.dt = .5 * utils.PWaveTimeStep()
         O.run(_MAX_STEPS, True)
@@ -61,6 +63,13 @@ def _compress(cloud, radius):
     finally:
         O.resetThisScene()
         O.switchScene()
+
+
+def _spheresFor(size, radius, rRelFuzz):
+    """Spheres of a dense packing (solid fraction _DENSE_FILL) of about 1.1 times the box of size (so that
+    one compressed cell covers it)."""
+    mean = 4 / 3. * math.pi * radius ** 3 * (1 + rRelFuzz ** 2)
+    return max(1, int(math.ceil(1.1 * size[0] * size[1] * size[2] * _DENSE_FILL / mean)))
 
 
 def _cloud(size, radius, rRelFuzz, seed, num=-1):
@@ -86,7 +95,7 @@ def randomPeriPack(radius, initSize, rRelFuzz=0.0, memoizeDb=None, noPrint=False
             return sp
     if not noPrint:
         print("No suitable packing in database found, running PERIODIC compression")
-    sp = _compress(_cloud(size, radius, rRelFuzz, seed), radius)
+    sp = _compress(_cloud(size, radius, rRelFuzz, seed), radius, _FRICTION_PERI)
     if memoizeDb:
         _memoSave(memoizeDb, sp, radius, rRelFuzz)
     return sp
@@ -111,15 +120,13 @@ def randomDensePack(predicate, radius, material=-1, dim=None, cropLayers=0, rRel
     for x in size:
         _positive('randomDensePack', 'the dimensions (predicate.dim() or dim)', x)
     size = size + Vector3(1, 1, 1) * (2 * radius * (1 + rRelFuzz) * cropLayers)
-    sp = _memoLoad(memoizeDb, radius, rRelFuzz, spheresInCell or None, size, not memoDbg, memoDbg) if memoizeDb else None
+    sp = _memoLoad(memoizeDb, radius, rRelFuzz, spheresInCell or None, size, False, memoDbg) if memoizeDb else None
     if sp is None:
         print("No suitable packing in database found, running PERIODIC compression")
-        if spheresInCell:
-            volume = spheresInCell * 4 / 3. * math.pi * radius ** 3 * (1 + rRelFuzz ** 2) / (1 - _LOOSE_POROSITY)
-            cloud = _cloud(Vector3(1, 1, 1) * volume ** (1 / 3.), radius, rRelFuzz, seed, spheresInCell)
-        else:  # one cell the size of the (compressed) packing, a little larger first
-            cloud = _cloud(size * 1.6, radius, rRelFuzz, seed)
-        sp = _compress(cloud, radius)
+        n = int(spheresInCell) or _spheresFor(size, radius, rRelFuzz)
+        volume = n * 4 / 3. * math.pi * radius ** 3 * (1 + rRelFuzz ** 2) / (1 - _LOOSE_POROSITY)
+        cloud = _cloud(Vector3(1, 1, 1) * volume ** (1 / 3.), radius, rRelFuzz, seed, n)
+        sp = _compress(cloud, radius, _FRICTION_DENSE)
         if memoizeDb:
             _memoSave(memoizeDb, sp, radius, rRelFuzz)
     sp.cellFill(size)
@@ -135,11 +142,12 @@ def _memoSave(db, sp, radius, rRelFuzz):
         text = open(f).read()
     con = sqlite3.connect(db)
     with con:
-        con.execute('create table if not exists packings (radius real, rRelFuzz real, sx real, sy real, sz real, N integer, '
-                    'timestamp real, pack text)')
+        con.execute('create table if not exists packings (radius real, rRelFuzz real, dimx real, dimy real, dimz real, N integer, '
+                    'timestamp real, periodic integer, pack blob)')
         c = sp.cellSize
-        con.execute('insert into packings values (?,?,?,?,?,?,?,?)', (radius, rRelFuzz, c[0], c[1], c[2], len(sp), time.time(), text))
+        con.execute('insert into packings values (?,?,?,?,?,?,?,?,?)', (radius, rRelFuzz, c[0], c[1], c[2], len(sp), time.time(), 1, text))
     con.close()
+    print('Packing saved to the database', db)
 
 
 def _memoLoad(db, radius, rRelFuzz, spheresInCell, size, quiet, dbg=False):
@@ -149,15 +157,17 @@ def _memoLoad(db, radius, rRelFuzz, spheresInCell, size, quiet, dbg=False):
         return None
     con = sqlite3.connect(db)
     try:
-        rows = con.execute('select radius, rRelFuzz, sx, sy, sz, N, pack from packings').fetchall()
+        rows = con.execute('select radius, rRelFuzz, dimx, dimy, dimz, N, timestamp, pack from packings').fetchall()
     except sqlite3.DatabaseError as e:
         raise RuntimeError('randomDensePack: %s is not a packing database (%s)' % (db, e)) from None
     finally:
         con.close()
     best = None
-    for r, fuzz, sx, sy, sz, n, text in rows:
+    for r, fuzz, sx, sy, sz, n, stamp, text in rows:
         if abs(fuzz - rRelFuzz) > 1e-6 * max(1, rRelFuzz):
             why = 'rRelFuzz %g differs' % fuzz
+        elif not isinstance(text, str) or not text.startswith('##PERIODIC::'):
+            why = 'not a packing of this engine'
         elif spheresInCell and n < spheresInCell:
             why = 'only %d spheres in the cell' % n
         else:
@@ -165,7 +175,7 @@ def _memoLoad(db, radius, rRelFuzz, spheresInCell, size, quiet, dbg=False):
         if dbg:
             print('Packing with %d spheres, radius %g, cell (%g, %g, %g): %s' % (n, r, sx, sy, sz, why or 'suitable'))
         if why is None and (best is None or n < best[0]):
-            best = (n, r, text)
+            best = (n, r, text, (sx, sy, sz), stamp)
     if best is None:
         return None
     with tempfile.TemporaryDirectory() as d:
@@ -176,5 +186,7 @@ def _memoLoad(db, radius, rRelFuzz, spheresInCell, size, quiet, dbg=False):
     sp.scale(radius / best[1])
     sp.translate(-Vector3(sp.center()) + Vector3(sp.cellSize) / 2)  # (scale is about the centre)
     if not quiet:
-        print('Found suitable packing in %s (%d spheres)' % (db, best[0]))
+        d = best[3]
+        print('Found suitable packing in %s (radius=%g±%g,N=%d,dim=%.4g×%.4g×%.4g,periodic,scale=%g), created %s'
+              % (db, radius, rRelFuzz, best[0], d[0], d[1], d[2], radius / best[1], time.ctime(best[4])))
     return sp
