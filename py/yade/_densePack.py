@@ -17,6 +17,7 @@ from . import utils
 # (overlaps of about 1e-4 of the radius at the end); porosity and sphere counts as the reference's
 _YOUNG, _STRESSES, _MAX_STEPS = 30e9, [-1e8, -1e6], 200000
 _FRICTION_PERI, _FRICTION_DENSE = 0., .5
+_MAX_UNBALANCED = 1e-2
 _DENSE_FILL = .56  # (about what the compression reaches with _FRICTION_DENSE)
 _LOOSE_POROSITY = .85  # of the initial cloud of randomDensePack's spheresInCell spheres
 
@@ -51,7 +52,7 @@ def _compress(cloud, radius, friction):
         cloud.toSimulation(material=mat)  # (sets the periodic cell)
         O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()], verletDist=.05 * radius),
                      InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
-                     PeriIsoCompressor(charLen=2 * radius, stresses=_STRESSES, maxUnbalanced=1e-2, doneHook='import yade; yade.O.pause()', globalUpdateInt=5,
+                     PeriIsoCompressor(charLen=2 * radius, stresses=_STRESSES, maxUnbalanced=_MAX_UNBALANCED, doneHook='import yade; yade.O.pause()', globalUpdateInt=5,
                                        keepProportions=True), NewtonIntegrator(damping=.6)]
         O.dt = .5 * utils.PWaveTimeStep()
         O.run(_MAX_STEPS, True)
