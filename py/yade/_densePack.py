@@ -91,7 +91,7 @@ def randomPeriPack(radius, initSize, rRelFuzz=0.0, memoizeDb=None, noPrint=False
     for x in size:
         _positive('randomPeriPack', 'initSize', x)
     if memoizeDb:
-        sp = _memoLoad(memoizeDb, radius, rRelFuzz, None, size, noPrint)
+        sp = _memoLoad(memoizeDb, radius, rRelFuzz, None, noPrint)
         if sp is not None:
             return sp
     if not noPrint:
@@ -121,7 +121,7 @@ def randomDensePack(predicate, radius, material=-1, dim=None, cropLayers=0, rRel
     for x in size:
         _positive('randomDensePack', 'the dimensions (predicate.dim() or dim)', x)
     size = size + Vector3(1, 1, 1) * (2 * radius * (1 + rRelFuzz) * cropLayers)
-    sp = _memoLoad(memoizeDb, radius, rRelFuzz, spheresInCell or None, size, False, memoDbg) if memoizeDb else None
+    sp = _memoLoad(memoizeDb, radius, rRelFuzz, spheresInCell or None, False, memoDbg) if memoizeDb else None
     if sp is None:
         print("No suitable packing in database found, running PERIODIC compression")
         n = int(spheresInCell) or _spheresFor(size, radius, rRelFuzz)
@@ -151,9 +151,9 @@ def _memoSave(db, sp, radius, rRelFuzz):
     print('Packing saved to the database', db)
 
 
-def _memoLoad(db, radius, rRelFuzz, spheresInCell, size, quiet, dbg=False):
+def _memoLoad(db, radius, rRelFuzz, spheresInCell, quiet, dbg=False):
     """The stored periodic packing with the same rRelFuzz, scaled to radius, with at least spheresInCell
-    spheres (if given) and, repeated, as large as size; the one with fewest spheres; None if none."""
+    spheres (if given); the one with fewest spheres; None if none."""
     if not os.path.exists(db):
         return None
     con = sqlite3.connect(db)
