@@ -217,7 +217,7 @@ void Omega::setScene(std::shared_ptr<Scene> s) {
 }
 
 void Omega::switchWorld() {
-    requireStopped("O.switchWorld()");
+    if (running) throw std::runtime_error("Please stop the simulation first, e.g. O.pause()."); // (the reference's words)
     joinLoop();
     current = 1 - current;
 }

@@ -550,6 +550,32 @@ void SpherePack::translate(const Vector3r& shift) {
     for (Sph& s : pack) s.c += shift;
 }
 
+void SpherePack::cellRepeat(const Vector3i& count) {
+    if (!isPeriodic()) throw std::logic_error("cellRepeat cannot be used on non-periodic packing.");
+    if (count.minCoeff() < 1) throw std::invalid_argument("SpherePack.cellRepeat: each count must be at least 1");
+    int clumpSpan = 0; // copies of clump k take ids k + copy·clumpSpan
+    for (const Sph& s : pack) clumpSpan = std::max(clumpSpan, s.clumpId + 1);
+    const std::vector<Sph> cell = pack;
+    pack.clear();
+    pack.reserve(cell.size() * std::size_t(count.prod()));
+    int copy = 0;
+    for (int i = 0; i < count[0]; ++i)
+        for (int j = 0; j < count[1]; ++j)
+            for (int k = 0; k < count[2]; ++k, ++copy) {
+                const Vector3r shift(i * cellSize[0], j * cellSize[1], k * cellSize[2]);
+                for (const Sph& s : cell) pack.push_back(Sph { s.c + shift, s.r, s.clumpId < 0 ? -1 : s.clumpId + copy * clumpSpan });
+            }
+    cellSize = cellSize.cwiseProduct(count.cast<Real>());
+}
+
+void SpherePack::cellFill(const Vector3r& size) {
+    if (!isPeriodic()) throw std::logic_error("cellFill cannot be used on non-periodic packing.");
+    if (!size.allFinite()) throw std::invalid_argument("SpherePack.cellFill: the size must be finite");
+    Vector3i count;
+    for (int a = 0; a < 3; ++a) count[a] = std::max(1, int(std::ceil(size[a] / cellSize[a])));
+    cellRepeat(count);
+}
+
 void SpherePack::scale(Real factor) {
     if (!(std::isfinite(factor) && factor > 0)) throw std::invalid_argument("SpherePack.scale: factor must be positive, got " + str(factor));
     const Vector3r mid = center();

@@ -78,6 +78,11 @@ public:
     Vector3r                      center() const;
     Real                          relDensity() const; // spheres' volume / volume of aabb()
     void                          translate(const Vector3r& shift);
+    // Periodic packings only (std::logic_error otherwise): count[i] copies of the cell along axis i, each
+    // shifted by a whole number of cell sizes; cellSize grows by count (clump ids stay distinct per copy).
+    void                          cellRepeat(const Vector3i& count);
+    // cellRepeat by the fewest copies that make the cell at least size along each axis.
+    void                          cellFill(const Vector3r& size);
     void                          scale(Real factor); // about center(); radii and cellSize too
     // (diameters, cumulative fractions), bins+1 values each, diameters from the smallest to the largest;
     // fractions of the number of spheres, or of their volume when mass.

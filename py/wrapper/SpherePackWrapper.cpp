@@ -1,6 +1,9 @@
 // yade.pack.SpherePack: the geometric packing of pkg/dem/SpherePack, with Yade's argument names. Iteration
 // gives (center, radius) pairs; indexing and toList add the clump id of clump members, as in the reference.
 // toSimulation is added in Python (py/yade/pack.py).
+#include <py/wrapper/OmegaWrapper.hpp>
+#include <core/Scene.hpp>
+#include <pkg/common/Sphere.hpp>
 #include <pkg/dem/SpherePack.hpp>
 #include <py/wrapper/SpherePackWrapper.hpp>
 #include <pybind11/stl.h>
@@ -67,6 +70,19 @@ namespace {
             PyErr_SetObject(PyExc_OSError, py::make_tuple(e.err, e.what(), e.file).ptr());
         }
     }
+
+    // The spheres of the current scene (a periodic one: centres wrapped into the cell, and its size).
+    void fromSimulation(SpherePack& p) {
+        const Scene& scene = omega().scene();
+        p.pack.clear();
+        p.cellSize = scene.isPeriodic ? scene.cell->size() : Vector3r::Zero();
+        for (const auto& b : scene.bodies) {
+            const Sphere* s = b ? dynamic_cast<const Sphere*>(b->shape.get()) : nullptr;
+            if (!s) continue;
+            const Vector3r c = scene.isPeriodic ? scene.cell->wrapPt(b->state->pos()) : Vector3r(b->state->pos());
+            p.pack.push_back(SpherePack::Sph { c, s->radius, -1 });
+        }
+    }
 } // namespace
 
 void bindSpherePack(py::module_& m) {
@@ -128,6 +144,14 @@ void bindSpherePack(py::module_& m) {
             .def("save", &SpherePack::save, py::arg("fileName"), "Write as text: 'x y z r' per line, 'x y z r clumpId' (-1: no clump) if the packing has clumps, after "
                     "'##PERIODIC:: sx sy sz' if periodic")
             .def("load", &SpherePack::load, py::arg("fileName"), "Replace the spheres by those of a file written by save() (or by Yade)")
+            .def("cellRepeat", &SpherePack::cellRepeat, py::arg("count"),
+                    "Repeat the periodic packing count[i] times along axis i; cellSize grows accordingly (non-periodic: RuntimeError)")
+            .def("cellFill", &SpherePack::cellFill, py::arg("size"),
+                    "Repeat the periodic packing (cellRepeat) the fewest times that make cellSize at least size on every axis "
+                    "(non-periodic: RuntimeError)")
+            .def("fromSimulation", &fromSimulation,
+                    "Replace the spheres by the spherical bodies of the current scene (O.bodies, by id); a periodic scene "
+                    "also sets cellSize, and the centres are wrapped into the cell")
             .def("toList", &toList, "[(center, radius), ...], (center, radius, clumpId) for clump members")
             .def("fromList", &fromList, py::arg("list"), "Replace the spheres by [(center, radius), ...]; an item (center, radius, clumpId) is a clump member")
             .def_readwrite("cellSize", &SpherePack::cellSize, "Size of the periodic cell; zero if not periodic")

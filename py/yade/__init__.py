@@ -20,7 +20,7 @@ from ._engines import *  # noqa: E402,F401,F403  (engine1 + engine2, CentralGrav
 from . import utils, geom  # noqa: E402,F401
 from . import pack  # noqa: E402,F401
 from ._packPredicates import *  # noqa: E402,F401,F403  (inSphere, inCylinder... at top level, as in the reference)
-from .pack import regularOrtho, regularHexa, filterSpherePack, cloudBestFitOBB, SpherePackIterator, SpherePack_toSimulation  # noqa: E402,F401
+from .pack import regularOrtho, regularHexa, filterSpherePack, cloudBestFitOBB, SpherePackIterator, SpherePack_toSimulation, randomDensePack, randomPeriPack  # noqa: E402,F401
 from . import ymport, export  # noqa: E402,F401
 from . import _clumps  # noqa: E402,F401  (O.bodies.replaceByClumps)
 

@@ -1,7 +1,7 @@
 """Sphere packings, as in yade.pack: SpherePack (geometry only: centers, radii and clump ids) and its
 makeCloud and makeClumpCloud loose random packings; volume predicates (inSphere, inCylinder... and their boolean operations,
 yade._packPredicates) and the regular packings that fill them (regularOrtho, regularHexa), and
-filterSpherePack.
+filterSpherePack; the dense random packings randomDensePack and randomPeriPack (yade._densePack).
 
     from yade import pack
     sp = pack.SpherePack()
@@ -17,9 +17,10 @@ from ._yade import O, SpherePack, Vector3, Quaternion, Matrix3
 from . import utils
 from ._packPredicates import *  # noqa: F401,F403
 from ._packPredicates import Predicate, __all__ as _predicateNames
+from ._densePack import randomDensePack, randomPeriPack  # noqa: E402 (they use filterSpherePack, below)
 
 __all__ = ['SpherePack', 'SpherePackIterator', 'SpherePack_toSimulation', 'regularOrtho', 'regularHexa', 'filterSpherePack',
-           'cloudBestFitOBB'] + _predicateNames
+           'cloudBestFitOBB', 'randomDensePack', 'randomPeriPack'] + _predicateNames
 
 
 def _periodicCell(sp):
