@@ -19,6 +19,7 @@
 #include <py/wrapper/SpherePackWrapper.hpp>
 #include <py/wrapper/CohesiveWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
+#include <py/wrapper/GridWrapper.hpp>
 #include <py/wrapper/PolyhedraWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
 #include <py/wrapper/TriaxialWrapper.hpp>
@@ -57,6 +58,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindFrictVisco(m);
     yade::bindPolyhedra(m);
     yade::bindCohesive(m);
+    yade::bindGrid(m);
     yade::bindTriaxial(m);
     yade::bindDisplay(m);
     // PyRunner commands run in the namespace of __main__ (the script), holding the GIL; a Python
