@@ -79,13 +79,13 @@ def gridConnection(id1, id2, radius, wire=False, color=None, highlight=False, ma
     b.state.inertia = Vector3(1, 1, 1) * (2. / 5. * b.state.mass * radius ** 2)
     b.dynamic = False
     b.mask = mask
+    i = createInteraction(id1, id2)  # (first: nothing is changed when the engines cannot make the bond)
+    i.geom.connectionBody = b
     half = math.pi * radius ** 2 * length * n1.material.density / 2
     for n in (n1, n2):
         n.state.mass = n.state.mass + half
         n.state.inertia = n.state.inertia + Vector3(1, 1, 1) * (2. / 5. * half * radius ** 2)
         n.shape.addConnection(b)
-    i = createInteraction(id1, id2)
-    i.geom.connectionBody = b
     return b
 
 
