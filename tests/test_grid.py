@@ -161,3 +161,25 @@ def test_bad_input_is_a_clear_error():
         gridpfacet.cylinderConnection([(0, 0, 0)])
     with pytest.raises(RuntimeError, match='node1 and node2'):
         GridConnection(radius=0.1).getLength()
+
+
+def test_saved_grid_runs_on_as_before(tmp_path):
+    """O.save then O.load: the loaded grid continues exactly as the one that was not saved (its connections find their nodes by
+    id; GridNodeGeom6D.connectionBody and GridNode.getConnections() are not saved)"""
+    scenes.engines()
+    O.materials.append(CohFrictMat(young=1e7, poisson=0.3, density=1000, normalCohesion=1e12, shearCohesion=1e12, momentRotationLaw=True,
+                                   label='i'))
+    nodes, cyls = [], []
+    gridpfacet.cylinderConnection([(0.1 * i, 0, 0) for i in range(4)], 0.02, nodes, cyls, intMaterial='i', extMaterial='i')
+    O.bodies[nodes[0]].state.blockedDOFs = 'xyzXYZ'
+    O.dt = 1e-4
+    O.run(100, True)
+    f = str(tmp_path / 'grid.yade')
+    O.save(f)
+    O.run(100, True)
+    a = [tuple(b.state.pos) for b in O.bodies]
+    O.load(f)
+    O.run(100, True)
+    assert [tuple(b.state.pos) for b in O.bodies] == a
+    assert O.bodies[cyls[0]].shape.node2.id == nodes[1]
+    assert O.bodies[cyls[0]].shape.getLength() == pytest.approx(0.1, abs=1e-5)

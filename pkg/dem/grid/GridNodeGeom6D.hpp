@@ -14,7 +14,8 @@ public:
     std::shared_ptr<Body> connectionBody;
     template <class V> void visit(V& v) {
         ScGeom6D::visit(v);
-        v.attr("connectionBody", connectionBody, "The GridConnection body linking the two nodes (set by yade.gridpfacet.gridConnection)");
+        v.attr("connectionBody", connectionBody, "The GridConnection body linking the two nodes (set by yade.gridpfacet.gridConnection; not saved with the scene)",
+                Attr::noSave);
     }
     YADE_INDEXABLE(GridNodeGeom6D)
 };
