@@ -183,3 +183,21 @@ def test_saved_grid_runs_on_as_before(tmp_path):
     assert [tuple(b.state.pos) for b in O.bodies] == a
     assert O.bodies[cyls[0]].shape.node2.id == nodes[1]
     assert O.bodies[cyls[0]].shape.getLength() == pytest.approx(0.1, abs=1e-5)
+
+
+def test_connection_without_its_nodes_stops_the_step_with_an_error():
+    """a GridConnection made by hand without nodes, or whose node was erased: the collider's Bo1 raises RuntimeError (not a crash)"""
+    from yade import Aabb
+    from yade.utils import sphere
+    scenes.engines()
+    O.bodies.append(sphere((0, 0, 0), 0.1))
+    b = Body()
+    b.shape, b.material, b.bound = GridConnection(radius=0.1), CohFrictMat(), Aabb()
+    O.bodies.append(b)
+    with pytest.raises(RuntimeError, match='node1 and node2'):
+        O.step()
+    n = O.bodies.append(gridpfacet.gridNode((0, 0, 0), 0.1))
+    b.shape.node1, b.shape.node2 = O.bodies[n], O.bodies[0]
+    O.bodies.erase(n)
+    with pytest.raises(RuntimeError, match='not in O.bodies'):
+        O.step()
