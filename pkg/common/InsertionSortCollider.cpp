@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 #include <core/Scene.hpp>
 #include <pkg/common/InsertionSortCollider.hpp>
@@ -62,9 +63,10 @@ void InsertionSortCollider::updateBounds() {
         if (f) f->scene = scene;
     boxes.swap(previousBoxes);
     boxes.assign(bodies.size(), Box{Vector3r::Constant(NaN), Vector3r::Constant(NaN), Vector3r::Constant(NaN), 0, -1, false, false});
-    // each body on its own (the Bo1 functors write only the bound they are given)
+    // each body on its own (the Bo1 functors write only the bound they are given); a Bo1's error is rethrown after the loop
+    std::exception_ptr error;
 #pragma omp parallel for schedule(static)
-    for (long id = 0; id < n; ++id) {
+    for (long id = 0; id < n; ++id) try {
         Body* b = bodies[(Body::id_t)id].get();
         if (!b || !b->shape) continue;
         if (!b->bounded) {
@@ -82,7 +84,11 @@ void InsertionSortCollider::updateBounds() {
         b->bound->refPos = b->state->pos();
         b->bound->lastUpdateIter = scene->iter;
         boxes[id] = Box{b->bound->min, b->bound->max, b->bound->refPos, b->mask, b->clumpId, b->isDynamic(), true};
+    } catch (...) {
+#pragma omp critical(colliderBoundError)
+        if (!error) error = std::current_exception();
     }
+    if (error) std::rethrow_exception(error);
 }
 
 bool InsertionSortCollider::boundsOverlap(const Body& a, const Body& b) const {

@@ -19,6 +19,7 @@
 #include <py/wrapper/SpherePackWrapper.hpp>
 #include <py/wrapper/CohesiveWrapper.hpp>
 #include <py/wrapper/FrictViscoWrapper.hpp>
+#include <py/wrapper/GridWrapper.hpp>
 #include <py/wrapper/PolyhedraWrapper.hpp>
 #include <py/wrapper/CpmWrapper.hpp>
 #include <py/wrapper/HertzMindlinWrapper.hpp>
@@ -58,6 +59,7 @@ PYBIND11_MODULE(_yade, m) {
     yade::bindFrictVisco(m);
     yade::bindPolyhedra(m);
     yade::bindCohesive(m);
+    yade::bindGrid(m);
     yade::bindTriaxial(m);
     yade::bindCpm(m);
     yade::bindDisplay(m);

@@ -3,6 +3,7 @@
 #include <core/Scene.hpp>
 #include <pkg/dem/cohesive/Ip2_CohFrictMat_CohFrictMat_CohFrictPhys.hpp>
 #include <pkg/dem/cohesive/ScGeom6D.hpp>
+#include <pkg/dem/grid/GridNodeGeom6D.hpp>
 #include <stdexcept>
 
 namespace yade {
@@ -28,10 +29,25 @@ void Ip2_CohFrictMat_CohFrictMat_CohFrictPhys::go(const std::shared_ptr<Material
     phys->ktw = phys->ks * harmonicMean(a.alphaKtw, b.alphaKtw) * r1 * r2;
     phys->maxRollPl = std::min(a.etaRoll * r1, b.etaRoll * r2);
     phys->maxTwistPl = std::min(a.etaTwist * r1, b.etaTwist * r2);
+    if (const auto* grid = dynamic_cast<const GridNodeGeom6D*>(geom)) setBeamStiffness(*phys, a, *grid);
     phys->momentRotationLaw = a.momentRotationLaw && b.momentRotationLaw;
     phys->fragile = a.fragile || b.fragile;
     if ((setCohesionOnNewContacts || setCohesionNow) && a.isCohesive && b.isCohesive) makeCohesive(*phys, a, b, r1, r2);
     I.phys = phys;
+}
+
+// The bond of two grid nodes is a beam of node 1's material, of the node's radius r and of the nodes' distance L
+// (Effeindzourou et al. 2016): kn = EA/L, ks = 12EI/L³, kr = EI/L, ktw = GJ/L (A = πr², I = πr⁴/4, J = 2I), and its
+// length now is the length at rest (unp = the penetration depth now).
+void Ip2_CohFrictMat_CohFrictMat_CohFrictPhys::setBeamStiffness(CohFrictPhys& phys, const CohFrictMat& a, const GridNodeGeom6D& g) {
+    const Real r = g.refR1, L = g.refR1 + g.refR2 - g.penetrationDepth;
+    if (!(L > 0)) throw std::runtime_error("Ip2_CohFrictMat_CohFrictMat_CohFrictPhys: two grid nodes at the same place (a bond of length 0)");
+    const Real area = M_PI * r * r, I = M_PI * std::pow(r, 4) / 4, G = a.young / (2 * (1 + a.poisson));
+    phys.kn = a.young * area / L;
+    phys.ks = 12 * a.young * I / std::pow(L, 3);
+    phys.kr = a.young * I / L;
+    phys.ktw = G * 2 * I / L;
+    phys.unp = g.penetrationDepth;
 }
 
 void Ip2_CohFrictMat_CohFrictMat_CohFrictPhys::makeCohesive(CohFrictPhys& phys, const CohFrictMat& a, const CohFrictMat& b, Real r1, Real r2) const {

@@ -41,6 +41,7 @@ private:
     long long cohesionIter = -1; // the step setCohesionNow was applied (it turns false at the next one)
     void makeCohesive(CohFrictPhys& phys, const CohFrictMat& a, const CohFrictMat& b, Real r1, Real r2) const;
     void initExistingContacts(bool all);
+    static void setBeamStiffness(CohFrictPhys& phys, const CohFrictMat& a, const class GridNodeGeom6D& g);
 };
 
 } // namespace yade
