@@ -91,8 +91,9 @@ def _commonBodySetup(b, shape, center, material, fixed, mask, volume=None, inert
         b.state.inertia = Vector3(inertia) * b.state.mass
     b.dynamic = not fixed
     b.mask = mask
-    # no bound yet (noBound is kept for the reference's signature): the collider's Bo1 functor makes it at
-    # its first pass, as in the reference, where a new body's bound is None until then
+    # no bound yet: the collider's Bo1 functor makes it at its first pass, as in the reference, where a new
+    # body's bound is None until then; noBound=True keeps the body out of the collider (bounded False), as there
+    b.bounded = not noBound
     return b
 
 
