@@ -1,10 +1,24 @@
 #include <core/Body.hpp>
+#include <atomic>
 #include <stdexcept>
 
 namespace yade {
 
+static std::atomic<long> standIns{0};
+
+long Body::standInsAlive() { return standIns.load(); }
+
 void Body::postLoad() {
-    if (!state) throw std::invalid_argument("Body.state cannot be None (give a State())");
+    if (!state) {
+        if (!stateStandIn) {
+            ++standIns;
+            stateStandIn = std::shared_ptr<State>(new State(), [](State* s) {
+                delete s;
+                --standIns;
+            });
+        }
+        state = stateStandIn;
+    }
     if (!store) return;
     if (state->boundStore() != store.get() || state->boundSlot() != id) {
         if (auto old = boundState.lock(); old && old != state) old->unbind();

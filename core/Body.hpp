@@ -47,6 +47,11 @@ public:
     // The store of the scene the body is in (null when in none), set by BodyContainer.
     std::shared_ptr<BodyStore> store;
     std::weak_ptr<State> boundState; // the state bound to the record
+    // `b.state = None` (as in the reference, allowed until the next step, which refuses it): the
+    // body keeps a stand-in State so that nothing reading it can crash, and Python sees None.
+    std::shared_ptr<State> stateStandIn;
+    bool stateIsNone() const { return state && state == stateStandIn; }
+    static long standInsAlive(); // stand-ins in existence, all scenes (a step looks for them only then)
     // Two bodies may collide when their masks share a bit and at least one of them moves.
     static bool mayCollide(const Body& a, const Body& b) {
         return (a.mask & b.mask) != 0 && a.id != b.id && (a.isDynamic() || b.isDynamic()) && !(a.clumpId >= 0 && a.clumpId == b.clumpId);

@@ -30,7 +30,7 @@ void BodyContainer::checkInsertable(const std::shared_ptr<Body>& b) const {
     if (!b) throw std::invalid_argument("cannot append None to O.bodies");
     if (b->id >= 0)
         throw std::out_of_range("Body already has id " + std::to_string(b->id) + " set; appending such body (for the second time) is not allowed.");
-    if (!b->state) throw std::invalid_argument("cannot append a body whose state is None");
+    if (!b->state) b->postLoad(); // (a body built without a State: it gets a stand-in, as after b.state = None)
 }
 
 BodyContainer::id_t BodyContainer::insert(const std::shared_ptr<Body>& b) {

@@ -115,7 +115,17 @@ void Scene::setEngines(const std::vector<std::shared_ptr<Engine>>& e) {
     }
 }
 
+// A body whose state Python set to None stops the step before it begins, naming the body, as in
+// the reference (which says so for a body with a material; without one it fails too, at random).
+static void checkStates(const BodyContainer& bodies) {
+    if (Body::standInsAlive() == 0) return;
+    for (const auto& b : bodies)
+        if (b && b->stateIsNone())
+            throw std::runtime_error("Body #" + std::to_string(b->id) + (b->material ? ": has Body::material, but NULL Body::state." : ": has NULL Body::state."));
+}
+
 void Scene::beginStep() {
+    checkStates(bodies);
     {
         std::lock_guard<std::mutex> lock(enginesMutex);
         inStep = true;

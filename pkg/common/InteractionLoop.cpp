@@ -511,14 +511,29 @@ size_t InteractionLoop::gatherBatch(Scratch& sc, int list, size_t j0, size_t j1,
     return n;
 }
 
+// An Ig2 functor over n contacts; false (and error set, naming it and the bodies) if it threw: the
+// exception stays inside the parallel region and is reported after it, as the Ip2 and Law2 ones.
+bool InteractionLoop::geometryOf(IGeomFunctor& f, const BodyColumns& columns, Contact* c, size_t n, char* flags, std::string& error) {
+    try {
+        f.goBatch(columns, c, n, flags);
+        return true;
+    } catch (const std::exception& e) {
+        std::string bodies = "bodies #" + std::to_string(c[0].id1) + " and #" + std::to_string(c[0].id2);
+        if (n > 1) bodies = "one of " + std::to_string(n) + " pairs, the first " + bodies;
+#pragma omp critical(yadeError)
+        error = f.getClassName() + " (" + bodies + "): " + e.what();
+        return false;
+    }
+}
+
 // Step 2 of processBatch: the geometry of the entries, one batch per Ig2 functor (usually one or
 // two in a batch of entries); entries[e].real is the functor's answer.
-void InteractionLoop::computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns) {
+void InteractionLoop::computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns, std::string& error) {
     Scratch::Entry* const entries = sc.entries.data();
     Contact* const contacts = sc.contacts.data();
     char* const flags = sc.flags.data();
     if (sc.oneGeomFunctor) { // (the common case: all of one shape pair)
-        entries[0].geom->goBatch(columns, contacts, n, flags);
+        if (!geometryOf(*entries[0].geom, columns, contacts, n, flags, error)) std::fill(flags, flags + n, geomFailed);
         for (size_t e = 0; e < n; ++e) entries[e].real = flags[e];
     } else {
         for (size_t first = 0; first < n; ++first) {
@@ -531,7 +546,7 @@ void InteractionLoop::computeGeometry(Scratch& sc, size_t n, const BodyColumns& 
                     sc.batch.push_back(contacts[e]);
                     sc.where.push_back(e);
                 }
-            f->goBatch(columns, sc.batch.data(), sc.batch.size(), flags);
+            if (!geometryOf(*f, columns, sc.batch.data(), sc.batch.size(), flags, error)) std::fill(flags, flags + sc.batch.size(), geomFailed);
             for (size_t m = 0; m < sc.where.size(); ++m) {
                 entries[sc.where[m]].geom = nullptr;
                 entries[sc.where[m]].real = flags[m];
@@ -619,6 +634,7 @@ size_t InteractionLoop::settleContacts(Scratch& sc, size_t n, std::string& error
             ++live;
             continue;
         }
+        if (x.real == geomFailed) continue; // (its Ig2 functor threw: the pair is left as it was)
         if (!x.real) {
             if (c.isReal()) intrs.endContact((size_t)x.k); // the geometry says the contact is over
             else if (*c.made) intrs.keepGeom((size_t)x.k, std::move(*c.made)); // (made, yet not a contact)
@@ -787,7 +803,7 @@ void InteractionLoop::processBatch(int list, size_t j0, size_t j1, bool quick, c
     if (fusedPasses && replayBatch(list, j0, j1, quick, twiceD, columns, error)) return;
     Scratch& sc = *scratch[threadNumber()];
     const size_t n = gatherBatch(sc, list, j0, j1, quick, twiceD, missingIg2);
-    if (n > 0) computeGeometry(sc, n, columns);
+    if (n > 0) computeGeometry(sc, n, columns, error);
     const size_t live = n > 0 ? settleContacts(sc, n, error) : 0;
     applyLaws(sc, live, columns, error);
     if (fusedPasses) keepBatch(sc, list, j0, j1, live);

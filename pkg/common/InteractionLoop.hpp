@@ -211,7 +211,9 @@ private:
     // its four steps, and what they share
     size_t gatherBatch(Scratch& sc, int list, size_t j0, size_t j1, bool quick, const Real* twiceD,
             std::vector<std::pair<const Shape*, const Shape*>>& missingIg2);
-    void computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns);
+    void computeGeometry(Scratch& sc, size_t n, const BodyColumns& columns, std::string& error);
+    static constexpr char geomFailed = 2; // (an entry's `real` when its Ig2 functor threw)
+    bool geometryOf(IGeomFunctor& f, const BodyColumns& columns, Contact* c, size_t n, char* flags, std::string& error);
     size_t settleContacts(Scratch& sc, size_t n, std::string& error);
     bool makeNewContact(Scratch& sc, Contact& c, long k, std::string& error);
     void applyLaws(Scratch& sc, size_t live, const BodyColumns& columns, std::string& error);

@@ -1,3 +1,4 @@
+#include <core/Body.hpp>
 #include <core/IGeom.hpp>
 #include <core/IPhys.hpp>
 #include <lib/base/ExternalWrites.hpp>
@@ -83,7 +84,11 @@ py::object getAttr(Serializable& s, const AttrInfo& a, py::handle owner) {
         case AttrKind::Vector3rVector: return py::cast(*static_cast<std::vector<Vector3r>*>(p));
         case AttrKind::Vector2rVector: return py::cast(*static_cast<std::vector<Vector2r>*>(p));
         case AttrKind::QuaternionrVector: return py::cast(*static_cast<std::vector<Quaternionr>*>(p));
-        case AttrKind::Ptr: return py::cast(a.getPtr(p));
+        case AttrKind::Ptr: {
+            std::shared_ptr<Serializable> v = a.getPtr(p);
+            if (const auto* b = dynamic_cast<const Body*>(&s); b && v && v == b->stateStandIn) return py::none(); // (b.state = None)
+            return py::cast(v);
+        }
         case AttrKind::PtrVector: return py::cast(a.getPtrVector(p));
     }
     return py::none();

@@ -240,6 +240,25 @@ namespace {
 		return py::object(std::move(arr));
 	}
 
+	// The reference's minieigen adds a 3-vector's terms as x + (y + z) in norm, squaredNorm and dot (found by
+	// running it on thousands of vectors): its Python-visible reductions follow it bit for bit. The engine's
+	// own Eigen arithmetic is not changed.
+	template <class T> typename T::Scalar refDot(const T& a, const T& b)
+	{
+		if constexpr (T::SizeAtCompileTime == 3) return a[0] * b[0] + (a[1] * b[1] + a[2] * b[2]);
+		else return a.dot(b);
+	}
+	template <class T> typename T::Scalar refSquaredNorm(const T& a)
+	{
+		if constexpr (T::IsVectorAtCompileTime) return refDot(a, a);
+		else return a.squaredNorm();
+	}
+	template <class T> T refNormalized(const T& a)
+	{
+		const typename T::Scalar n2 = refSquaredNorm(a);
+		return n2 > 0 ? T(a / std::sqrt(n2)) : a; // (a zero vector is left as it is, as Eigen does)
+	}
+
 	// Parts shared by all dense types (vectors and Matrix3): constructors from scalars, arithmetic,
 	// comparison, reductions, constants, repr, pickling, numpy.
 	template <class T> void defDense(py::class_<T>& cls)
@@ -278,11 +297,11 @@ namespace {
 		        .def("maxCoeff", [](const T& a) -> S { return a.maxCoeff(); })
 		        .def("minCoeff", [](const T& a) -> S { return a.minCoeff(); })
 		        .def("maxAbsCoeff", [](const T& a) -> S { return a.cwiseAbs().maxCoeff(); })
-		        .def("squaredNorm", [](const T& a) -> S { return a.squaredNorm(); })
+		        .def("squaredNorm", [](const T& a) -> S { return refSquaredNorm(a); })
 		        .def("abs", [](const T& a) -> T { return a.cwiseAbs(); });
 		if constexpr (isFloat) {
-			cls.def("norm", [](const T& a) -> S { return a.norm(); })
-			        .def("__abs__", [](const T& a) -> S { return a.norm(); }) // abs(v): the norm, as minieigen
+			cls.def("norm", [](const T& a) -> S { return std::sqrt(refSquaredNorm(a)); })
+			        .def("__abs__", [](const T& a) -> S { return std::sqrt(refSquaredNorm(a)); }) // abs(v): the norm, as minieigen
 			        .def("isApprox",
 			             [](const T& a, const T& b, S prec) { return a.isApprox(b, prec); },
 			             py::arg("other"),
@@ -319,10 +338,10 @@ namespace {
 		        .def("__getitem__", [](const T& a, py::ssize_t i) -> S { return a[normIndex(i, N, nameOf<T>())]; })
 		        .def("__setitem__", [](T& a, py::ssize_t i, S x) { noteExternalWrite(); a[normIndex(i, N, nameOf<T>())] = x; });
 
-		cls.def("dot", [](const T& a, const T& b) -> S { return a.dot(b); }, py::arg("other"));
+		cls.def("dot", [](const T& a, const T& b) -> S { return refDot(a, b); }, py::arg("other"));
 		if constexpr (std::is_floating_point_v<S>) {
-			cls.def("normalized", [](const T& a) -> T { return a.normalized(); })
-			        .def("normalize", [](T& a) { noteExternalWrite(); a.normalize(); });
+			cls.def("normalized", [](const T& a) -> T { return refNormalized(a); })
+			        .def("normalize", [](T& a) { noteExternalWrite(); a = refNormalized(a); });
 		}
 		if constexpr (N == 3) cls.def("cross", [](const T& a, const T& b) -> T { return a.cross(b); }, py::arg("other"));
 

@@ -92,8 +92,9 @@ def _commonBodySetup(b, shape, center, material, fixed, mask, volume=None, inert
         b.state.inertia = Vector3(inertia) * b.state.mass
     b.dynamic = not fixed
     b.mask = mask
-    if not noBound:
-        b.bound = Aabb(color=(0, 1, 0))
+    # no bound yet: the collider's Bo1 functor makes it at its first pass, as in the reference, where a new
+    # body's bound is None until then; noBound=True keeps the body out of the collider (bounded False), as there
+    b.bounded = not noBound
     return b
 
 

@@ -437,7 +437,7 @@ def factory(seed, describeOnly=False):
 
     def finiteState():
         for b in O.bodies:
-            if b is None:
+            if b is None or b.state is None:  # (state None, as the reference allows: the next step refuses it)
                 continue
             s = b.state
             for name in ('pos', 'vel', 'angVel', 'ori'):
