@@ -29,3 +29,4 @@ yade -n -x -j1 triaxial.py 2>/dev/null | grep '^TRIAXIAL' > data/triaxial.json
 yade -n -x -j1 cpm.py 2>/dev/null | grep '^CPM ' | sed 's/^CPM //' > data/cpm.json
 yade -n -x -j1 pack_dense.py 2>/dev/null | grep '^PACKDENSE ' | sed 's/^PACKDENSE //' > data/pack_dense.json
 yade -n -x -j1 grid.py 2>/dev/null | grep '^GRID ' | cut -c6- > data/grid.json
+yade -n -x -j1 minieigen_norms.py 2>/dev/null | grep '^{' > data/minieigen_norms.json
