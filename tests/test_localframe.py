@@ -209,28 +209,7 @@ def test_contact_forces_are_equal_and_opposite_in_a_pile():
     assert scale > 0 and f.norm() < 1e-12 * scale
 
 
-# ---------------------------------------------------------------- the reference's own tests
-
-REFERENCE_CORE = '/usr/lib/x86_64-linux-gnu/yade-double/py/yade/tests/core.py'
-# the reference's cases that fail here, none for want of this family's classes (doc/localframe.md)
-CORE_FAILING = {'testErasedAndNewlyCreatedSphere', 'testPythonToCppToPythonThrow', 'testMaterialReturnsState', 'testThrowsAtBadCombination',
-                'testThrowsAtNullState'}
-
-
-@pytest.mark.skipif(not os.path.exists(REFERENCE_CORE), reason='the reference Yade is not installed')
-def test_the_references_own_core_tests():
-    """The reference's regression module yade.tests.core, run here as it is: 19 of its 24 cases pass, the 5 others need what
-    other parts lack (CpmMat, pack.randomDensePack, ...)."""
-    script = ('import importlib.util, unittest\n'
-              'spec = importlib.util.spec_from_file_location("core", %r)\n'
-              'm = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n'
-              'r = unittest.TextTestRunner(verbosity=2).run(unittest.defaultTestLoader.loadTestsFromModule(m))\n'
-              'print("RESULT", r.testsRun, len(r.failures), len(r.errors))\n'
-              'print("FAILED", sorted(t.id().split(".")[-1] for t, _ in r.failures + r.errors))\n') % REFERENCE_CORE
-    out = subprocess.run([sys.executable, '-c', script], env=dict(os.environ), capture_output=True, text=True, timeout=300)
-    failed = set(eval(out.stdout.split('FAILED ')[1].splitlines()[0]))
-    assert failed <= CORE_FAILING, out.stdout + out.stderr
-    assert 'RESULT 24 ' in out.stdout
+# (the reference's own core module, which uses these classes among others, runs in tests/test_reference_core.py)
 
 
 def test_spheres_with_the_same_centre_give_finite_numbers():
