@@ -195,7 +195,7 @@ def compatibility_doc_names():
 def test_compatibility_doc_lists_only_reference_names():
     """doc/compatibility.md's lists hold names of the reference's launcher (no typos), each once."""
     listed = compatibility_doc_names()
-    assert len(listed) > 350
+    assert len(listed) > 300
     assert sorted(set(listed) - set(reference_launcher_names())) == []
     assert sorted(n for n in set(listed) if listed.count(n) > 1) == []
 
@@ -241,8 +241,9 @@ def test_script_namespace_has_the_reference_launchers_names(tmp_path):
     missing = sorted(set(ref) - names)
     print("names of the reference's launcher still missing here: %d of %d" % (len(missing), len(ref)))
     # (a ratchet: 632 when this list was first checked, 563 at the start of 2 Dec 2026, 392 on 5 Dec, 390 then 385 (the FrictVisco law) on 6 Dec,
-    # 358 on 7 Dec (clumps, the renderer's settings, makeVideo, VTKRecorder), 357 (utils.aabbExtrema2d); lower it as names come)
-    assert len(missing) <= 357
+    # 358 on 7 Dec (clumps, the renderer's settings, makeVideo, VTKRecorder), 357 (utils.aabbExtrema2d), 309 (the families of
+    # issue 40: cohesive, CPM, L3Geom/L6Geom, triaxial, polyhedra, grid nodes; randomDensePack); lower it as names come)
+    assert len(missing) <= 309
     undocumented = sorted(set(missing) - set(compatibility_doc_names()))
     assert undocumented == [], "missing here and not listed in doc/compatibility.md: %s" % undocumented
 
