@@ -138,9 +138,14 @@ def test_a_new_state_of_a_body_in_the_scene_takes_over_its_entries():
     assert tuple(old.pos) == (1, 2, 3)                 # the old one keeps its values
     old.pos = (0, 0, 0)
     assert tuple(O.bodies[0].state.pos) == (4, 5, 6)
-    with pytest.raises(ValueError, match="cannot be None"):
-        b.state = None
-    assert tuple(O.bodies[0].state.pos) == (4, 5, 6)
+    # None is taken, as in the reference (tests/test_reference_core.py); the next step refuses it, naming the body
+    b.state = None
+    assert b.state is None
+    with pytest.raises(RuntimeError, match="Body #0: has Body::material, but NULL Body::state"):
+        O.step()
+    assert O.iter == 0
+    b.state = State(pos=(7, 8, 9), mass=1)
+    assert tuple(O.bodies.arrays().pos[0]) == (7, 8, 9)
 
 
 def test_mask_reaches_the_column_the_integrator_reads():
