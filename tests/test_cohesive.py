@@ -4,14 +4,12 @@ Ip2_CohFrictMat_CohFrictMat_CohFrictPhys, Law2_ScGeom6D_CohFrictPhys_CohesionMom
 Checked against beam theory (a cantilever chain), analytic bond strengths, and the reference's numbers on the same scenes:
 tests/reference/cohesive.py is a plain Yade script, tests/reference/data/cohesive.json what the reference (Yade 2023.02a)
 printed running it. The rules found by running the reference are in doc/cohesive.md."""
-import importlib.util
-import json
-import math
 import os
 import subprocess
 import sys
 
 import pytest
+from reference_data import flat, scenes_and_data
 
 from yade import (O, CohFrictMat, CohFrictPhys, ScGeom6D, Ig2_Sphere_Sphere_ScGeom6D, Ig2_Facet_Sphere_ScGeom6D, Ip2_CohFrictMat_CohFrictMat_CohFrictPhys,
                   Law2_ScGeom6D_CohFrictPhys_CohesionMoment, MatchMaker, Quaternion, Vector3)
@@ -20,20 +18,8 @@ from yade.utils import sphere
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location('cohesive_scenes', os.path.join(HERE, 'reference', 'cohesive.py'))
-scenes = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(scenes)
-with open(os.path.join(HERE, 'reference', 'data', 'cohesive.json')) as _f:
-    REFERENCE = json.load(_f)
+scenes, REFERENCE = scenes_and_data('cohesive.py', 'cohesive.json')  # (tests/reference_data.py)
 REFERENCE_CHAIN = '/usr/lib/x86_64-linux-gnu/yade-double/py/yade/tests/cohesive-chain.py'
-
-
-def flat(x):
-    if isinstance(x, dict):
-        return [v for k in sorted(x) for v in flat(x[k])]
-    if isinstance(x, list):
-        return [v for y in x for v in flat(y)]
-    return [x]
 
 
 def assert_close(here, ref, rel, abs_=0.0):

@@ -3,12 +3,11 @@ Law2_ScGeom_CpmPhys_Cpm, CpmStateUpdater, UniaxialStrainer), doc/concrete.md.
 
 The scenes are tests/reference/cpm.py, a plain Yade script; tests/reference/data/cpm.json is what the reference (Yade 2023.02a)
 printed running it. The analytic checks (the damage law, the modulus of a chain, the crack onset) need no reference."""
-import importlib.util
-import json
 import math
 import os
 
 import pytest
+from reference_data import flat, scenes_and_data
 
 from yade import (O, CpmMat, CpmPhys, CpmState, CpmStateUpdater, FrictMat, Ip2_CpmMat_CpmMat_CpmPhys, Ip2_FrictMat_CpmMat_FrictPhys,
                   Law2_ScGeom_CpmPhys_Cpm, State, UniaxialStrainer)
@@ -17,19 +16,7 @@ from yade.utils import sphere
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location('cpm_scenes', os.path.join(HERE, 'reference', 'cpm.py'))
-scenes = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(scenes)
-with open(os.path.join(HERE, 'reference', 'data', 'cpm.json')) as _f:
-    REFERENCE = json.load(_f)
-
-
-def flat(x):
-    if isinstance(x, dict):
-        return [v for k in sorted(x) for v in flat(x[k])]
-    if isinstance(x, list):
-        return [v for y in x for v in flat(y)]
-    return [x]
+scenes, REFERENCE = scenes_and_data('cpm.py', 'cpm.json')  # (tests/reference_data.py)
 
 
 def assert_close(here, ref, rel, abs_=0.0):

@@ -2,12 +2,11 @@
 
 Checked against the reference's numbers on the same script (tests/reference/grid.py, its output tests/reference/data/grid.json),
 against Euler-Bernoulli beam theory (a cantilever of connections), and for clear errors on bad input."""
-import importlib.util
-import json
 import math
 import os
 
 import pytest
+from reference_data import flat, scenes_and_data
 
 from yade import O, Vector3, gridpfacet
 from yade import (Body, Bo1_GridConnection_Aabb, CohFrictMat, GridConnection, GridNode, GridNodeGeom6D,
@@ -16,19 +15,7 @@ from yade import (Body, Bo1_GridConnection_Aabb, CohFrictMat, GridConnection, Gr
 pytestmark = pytest.mark.usefixtures("fresh_scene")  # tests/conftest.py
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location('grid_scenes', os.path.join(HERE, 'reference', 'grid.py'))
-scenes = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(scenes)
-with open(os.path.join(HERE, 'reference', 'data', 'grid.json')) as _f:
-    REFERENCE = json.load(_f)
-
-
-def flat(x):
-    if isinstance(x, dict):
-        return [v for k in sorted(x) for v in flat(x[k])]
-    if isinstance(x, list):
-        return [v for y in x for v in flat(y)]
-    return [x]
+scenes, REFERENCE = scenes_and_data('grid.py', 'grid.json')  # (tests/reference_data.py)
 
 
 def assert_close(here, ref, abs_):
